@@ -1,0 +1,1 @@
+//! Derive macros for garmentcode (see the `garmentcode` crate).

@@ -1,0 +1,283 @@
+//! The arena: where the vertices, edges, panels and interfaces of one garment live.
+//!
+//! Garment programs share vertices between edges and edges between panel loops and
+//! interfaces, and mutate them in place (moving a vertex moves every edge that holds
+//! it; reversing an edge is seen by every interface that lists it). The arena gives
+//! each object an identity (a small copyable id) so these sharing semantics are
+//! explicit and cheap: components and interfaces hold ids, all geometry is here.
+//!
+//! One arena holds one garment; reuse it with [`Arena::clear`] to build many garments
+//! without reallocating.
+
+use crate::edge::{Curve, Edge};
+use crate::error::{Error, Result};
+use crate::interface::InterfaceData;
+use crate::math::{Vec2, close_enough};
+use crate::panel::PanelData;
+
+/// Identity of a vertex.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct VertexId(pub(crate) u32);
+
+/// Identity of an edge.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct EdgeId(pub(crate) u32);
+
+/// Identity of a panel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct PanelId(pub(crate) u32);
+
+/// Identity of an interface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct InterfaceId(pub(crate) u32);
+
+/// Stored edge: end-point vertices, relative curvature, label.
+#[derive(Clone, Debug)]
+pub(crate) struct EdgeData {
+    pub start: VertexId,
+    pub end: VertexId,
+    pub curve: Curve,
+    /// Index into [`Arena::labels`]; 0 is "no label".
+    pub label: u32,
+    /// Index of the edge in its panel's written loop, set on assembly.
+    pub geometric_id: u32,
+}
+
+/// Storage of one garment's geometry.
+#[derive(Clone, Debug)]
+pub struct Arena {
+    pub(crate) verts: Vec<Vec2>,
+    pub(crate) edges: Vec<EdgeData>,
+    pub(crate) panels: Vec<PanelData>,
+    pub(crate) interfaces: Vec<InterfaceData>,
+    labels: Vec<String>,
+}
+
+impl Default for Arena {
+    fn default() -> Self {
+        Arena::new()
+    }
+}
+
+impl Arena {
+    /// An empty arena.
+    pub fn new() -> Arena {
+        Arena { verts: Vec::new(), edges: Vec::new(), panels: Vec::new(), interfaces: Vec::new(), labels: vec![String::new()] }
+    }
+
+    /// Forget everything (keeping the allocations) to build another garment.
+    pub fn clear(&mut self) {
+        self.verts.clear();
+        self.edges.clear();
+        self.panels.clear();
+        self.interfaces.clear();
+        self.labels.truncate(1);
+    }
+
+    // ---- vertices ----
+
+    /// A new vertex at `p`.
+    pub fn vertex(&mut self, p: Vec2) -> VertexId {
+        self.verts.push(p);
+        VertexId((self.verts.len() - 1) as u32)
+    }
+
+    /// Position of a vertex.
+    #[inline]
+    pub fn pos(&self, v: VertexId) -> Vec2 {
+        self.verts[v.0 as usize]
+    }
+
+    /// Move a vertex (every edge holding it follows).
+    #[inline]
+    pub fn set_pos(&mut self, v: VertexId, p: Vec2) {
+        self.verts[v.0 as usize] = p;
+    }
+
+    // ---- edges ----
+
+    /// A new edge between two existing vertices. Like the reference, an edge whose
+    /// ends coincide (each coordinate within 1e-4) is refused.
+    pub fn edge(&mut self, start: VertexId, end: VertexId, curve: Curve) -> Result<EdgeId> {
+        check_distinct(self.pos(start), self.pos(end))?;
+        Ok(self.push_edge(start, end, curve))
+    }
+
+    pub(crate) fn push_edge(&mut self, start: VertexId, end: VertexId, curve: Curve) -> EdgeId {
+        self.edges.push(EdgeData { start, end, curve, label: 0, geometric_id: 0 });
+        EdgeId((self.edges.len() - 1) as u32)
+    }
+
+    /// A new straight edge between two new vertices.
+    pub fn line(&mut self, start: Vec2, end: Vec2) -> Result<EdgeId> {
+        check_distinct(start, end)?;
+        let s = self.vertex(start);
+        let e = self.vertex(end);
+        Ok(self.push_edge(s, e, Curve::Line))
+    }
+
+    /// A new edge with the given geometry between two new vertices.
+    pub fn add_edge(&mut self, edge: Edge) -> Result<EdgeId> {
+        check_distinct(edge.start, edge.end)?;
+        let s = self.vertex(edge.start);
+        let e = self.vertex(edge.end);
+        Ok(self.push_edge(s, e, edge.curve))
+    }
+
+    /// Geometry of an edge.
+    #[inline]
+    pub fn geom(&self, e: EdgeId) -> Edge {
+        let d = &self.edges[e.0 as usize];
+        Edge { start: self.pos(d.start), end: self.pos(d.end), curve: d.curve }
+    }
+
+    /// Start vertex of an edge.
+    #[inline]
+    pub fn start(&self, e: EdgeId) -> VertexId {
+        self.edges[e.0 as usize].start
+    }
+
+    /// End vertex of an edge.
+    #[inline]
+    pub fn end(&self, e: EdgeId) -> VertexId {
+        self.edges[e.0 as usize].end
+    }
+
+    /// Re-link the start of an edge to another vertex.
+    #[inline]
+    pub fn set_start(&mut self, e: EdgeId, v: VertexId) {
+        self.edges[e.0 as usize].start = v;
+    }
+
+    /// Re-link the end of an edge to another vertex.
+    #[inline]
+    pub fn set_end(&mut self, e: EdgeId, v: VertexId) {
+        self.edges[e.0 as usize].end = v;
+    }
+
+    /// Curvature of an edge.
+    #[inline]
+    pub fn curve(&self, e: EdgeId) -> Curve {
+        self.edges[e.0 as usize].curve
+    }
+
+    /// Replace the curvature of an edge.
+    pub fn set_curve(&mut self, e: EdgeId, c: Curve) {
+        self.edges[e.0 as usize].curve = c;
+    }
+
+    /// Length of an edge.
+    pub fn edge_length(&self, e: EdgeId) -> f64 {
+        self.geom(e).length()
+    }
+
+    /// Label of an edge ("" when none).
+    pub fn edge_label(&self, e: EdgeId) -> &str {
+        &self.labels[self.edges[e.0 as usize].label as usize]
+    }
+
+    /// Set the label of an edge.
+    pub fn set_edge_label(&mut self, e: EdgeId, label: &str) {
+        let id = self.intern(label);
+        self.edges[e.0 as usize].label = id;
+    }
+
+    pub(crate) fn intern(&mut self, label: &str) -> u32 {
+        if let Some(i) = self.labels.iter().position(|l| l == label) {
+            return i as u32;
+        }
+        self.labels.push(label.to_string());
+        (self.labels.len() - 1) as u32
+    }
+
+    /// Index of the edge in its panel's written loop (valid after assembly).
+    pub fn geometric_id(&self, e: EdgeId) -> u32 {
+        self.edges[e.0 as usize].geometric_id
+    }
+
+    /// Reverse an edge in place: swap its ends and mirror its curvature. Every
+    /// sequence and interface holding the edge sees the new direction.
+    pub fn reverse_edge(&mut self, e: EdgeId) {
+        let d = &mut self.edges[e.0 as usize];
+        std::mem::swap(&mut d.start, &mut d.end);
+        d.curve = d.curve.reversed();
+    }
+
+    /// Mirror an edge's curvature across its chord (after its vertices were reflected).
+    pub fn reflect_edge_features(&mut self, e: EdgeId) {
+        let d = &mut self.edges[e.0 as usize];
+        d.curve = d.curve.reflected();
+    }
+
+    /// Split an edge at fractions of its length (`by_length`) or of its curve
+    /// parameter. The pieces start at the edge's start vertex, end at its end vertex
+    /// and share new interior vertices. The original edge is left untouched (callers
+    /// substitute the pieces where it was used). Labels are not propagated.
+    pub fn subdivide(&mut self, e: EdgeId, fractions: &[f64], by_length: bool) -> Result<Vec<EdgeId>> {
+        let sum: f64 = fractions.iter().map(|f| f.abs()).sum();
+        if !close_enough(sum, 1.0, 1e-4) {
+            return Err(Error::Fractions { sum });
+        }
+        let geom = self.geom(e);
+        let pieces = geom.split(fractions, by_length);
+        for p in &pieces {
+            check_distinct(p.start, p.end)?;
+        }
+        let (first, last) = (self.start(e), self.end(e));
+        let mut out = Vec::with_capacity(pieces.len());
+        let mut prev = first;
+        for (i, p) in pieces.iter().enumerate() {
+            let end = if i + 1 == pieces.len() { last } else { self.vertex(p.end) };
+            out.push(self.push_edge(prev, end, p.curve));
+            prev = end;
+        }
+        Ok(out)
+    }
+
+    /// Straight edges through the interior linearisation points of an edge, reusing
+    /// its end vertices (used by bounding boxes and centres, as in the reference).
+    pub(crate) fn linearized_points(&self, e: EdgeId, n: Option<usize>) -> Vec<Vec2> {
+        let g = self.geom(e);
+        g.linearize(n.unwrap_or_else(|| g.default_linearization()))
+    }
+
+    /// Deep copy of edges: new edges and new vertices, with vertex sharing among the
+    /// copied edges preserved (consecutive edges stay chained, a loop stays closed).
+    pub fn copy_edges(&mut self, edges: &[EdgeId]) -> Vec<EdgeId> {
+        let mut map: Vec<(VertexId, VertexId)> = Vec::with_capacity(edges.len() + 1);
+        let mut out = Vec::with_capacity(edges.len());
+        for &e in edges {
+            let d = self.edges[e.0 as usize].clone();
+            let s = self.copy_vertex(&mut map, d.start);
+            let t = self.copy_vertex(&mut map, d.end);
+            self.edges.push(EdgeData { start: s, end: t, ..d });
+            out.push(EdgeId((self.edges.len() - 1) as u32));
+        }
+        out
+    }
+
+    fn copy_vertex(&mut self, map: &mut Vec<(VertexId, VertexId)>, v: VertexId) -> VertexId {
+        if let Some((_, n)) = map.iter().find(|(o, _)| *o == v) {
+            return *n;
+        }
+        let n = self.vertex(self.pos(v));
+        map.push((v, n));
+        n
+    }
+
+    /// Number of panels created so far.
+    pub fn panel_count(&self) -> usize {
+        self.panels.len()
+    }
+}
+
+/// The reference refuses edges whose ends are within 1e-4 in both coordinates.
+pub(crate) fn check_distinct(a: Vec2, b: Vec2) -> Result<()> {
+    if close_enough(a.x, b.x, 1e-4) && close_enough(a.y, b.y, 1e-4) {
+        return Err(Error::DegenerateEdge { x: a.x, y: a.y });
+    }
+    if !(a.is_finite() && b.is_finite()) {
+        return Err(Error::Geometry(format!("edge with non-finite end points ({a}, {b})")));
+    }
+    Ok(())
+}

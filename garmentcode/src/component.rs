@@ -1,0 +1,383 @@
+//! Components: hierarchies of panels and sub-components, placed as rigid blocks and
+//! assembled into the flat pattern.
+//!
+//! A garment program's types implement [`Part`] (usually through the
+//! `#[derive(Component)]` macro): a part is either a panel ([`Node::Panel`]) or a
+//! component ([`Node::Component`]) that lists its sub-parts in a fixed order and owns
+//! stitches. Placement (translate, rotate about the block's top centre, mirror),
+//! bounding boxes, lengths, labels and assembly are defined once here on [`Node`].
+
+use crate::arena::{Arena, InterfaceId, PanelId};
+use crate::error::{Error, Result};
+use crate::math::Vec3;
+use crate::pattern::Pattern;
+use crate::rotation::Rotation;
+use crate::stitch::{StitchRecord, StitchRule};
+
+/// What a part is: a single panel or a component with sub-parts.
+#[derive(Clone, Copy)]
+pub enum Node<'a> {
+    /// A panel (or a panel class wrapping one).
+    Panel(PanelId),
+    /// A component.
+    Component(&'a dyn Component),
+}
+
+/// Something placeable and assemblable: a panel, a panel class or a component.
+pub trait Part {
+    /// This part as a panel or a component.
+    fn node(&self) -> Node<'_>;
+}
+
+impl Part for PanelId {
+    fn node(&self) -> Node<'_> {
+        Node::Panel(*self)
+    }
+}
+
+impl<T: Part + ?Sized> Part for &T {
+    fn node(&self) -> Node<'_> {
+        (**self).node()
+    }
+}
+
+impl<T: Part + ?Sized> Part for Box<T> {
+    fn node(&self) -> Node<'_> {
+        (**self).node()
+    }
+}
+
+/// A garment component: an ordered set of sub-parts plus the stitches between them.
+pub trait Component {
+    /// Name of the component (informational; panel names are what is written).
+    fn name(&self) -> String;
+
+    /// Visit the direct sub-parts in order (the assembly order).
+    fn for_each_part(&self, f: &mut dyn FnMut(&dyn Part));
+
+    /// The component's own stitches, in creation order.
+    fn stitches(&self) -> Vec<StitchRule>;
+
+    /// An interface by name (for tools); `None` if the component has no such interface.
+    fn interface(&self, _name: &str) -> Option<InterfaceId> {
+        None
+    }
+
+    /// Names of the interfaces the component exposes.
+    fn interface_names(&self) -> Vec<&'static str> {
+        Vec::new()
+    }
+
+    /// Vertical length of the component, by default the sum of its parts' lengths.
+    fn length(&self, a: &Arena) -> f64 {
+        let mut total = 0.0;
+        self.for_each_part(&mut |p| total += p.node().length(a));
+        total
+    }
+}
+
+/// Collects `&dyn Part`s from component fields of various shapes (a part, an
+/// optional part, a list of parts); used by the derive macro.
+pub trait Parts {
+    /// Visit every part held by this field.
+    fn visit_parts(&self, f: &mut dyn FnMut(&dyn Part));
+}
+
+impl<T: Part> Parts for T {
+    fn visit_parts(&self, f: &mut dyn FnMut(&dyn Part)) {
+        f(self)
+    }
+}
+
+impl<T: Part> Parts for Option<T> {
+    fn visit_parts(&self, f: &mut dyn FnMut(&dyn Part)) {
+        if let Some(p) = self {
+            f(p)
+        }
+    }
+}
+
+impl<T: Part> Parts for Vec<T> {
+    fn visit_parts(&self, f: &mut dyn FnMut(&dyn Part)) {
+        for p in self {
+            f(p)
+        }
+    }
+}
+
+impl Node<'_> {
+    /// Pivot: a panel's origin; a component's top centre (centre x and z, top y of its
+    /// bounding box).
+    pub fn pivot_3d(&self, a: &Arena) -> Vec3 {
+        match self {
+            Node::Panel(p) => p.translation(a),
+            Node::Component(_) => {
+                let (lo, hi) = self.bbox3d(a);
+                Vec3::new((lo.x + hi.x) / 2.0, hi.y, (lo.z + hi.z) / 2.0)
+            }
+        }
+    }
+
+    /// 3D bounding box of the linearised outlines (infinite and inverted when empty).
+    pub fn bbox3d(&self, a: &Arena) -> (Vec3, Vec3) {
+        match self {
+            Node::Panel(p) => p.bbox3d(a),
+            Node::Component(c) => {
+                let mut lo = Vec3::splat(f64::INFINITY);
+                let mut hi = Vec3::splat(f64::NEG_INFINITY);
+                c.for_each_part(&mut |p| {
+                    let (l, h) = p.node().bbox3d(a);
+                    lo = lo.min(l);
+                    hi = hi.max(h);
+                });
+                (lo, hi)
+            }
+        }
+    }
+
+    /// Move by `d`.
+    pub fn translate_by(&self, a: &mut Arena, d: Vec3) {
+        match self {
+            Node::Panel(p) => {
+                p.translate_by(a, d);
+            }
+            Node::Component(c) => c.for_each_part(&mut |p| p.node().translate_by(a, d)),
+        }
+    }
+
+    /// Place the pivot at `t`, keeping the relative placement of sub-parts.
+    pub fn translate_to(&self, a: &mut Arena, t: Vec3) {
+        match self {
+            Node::Panel(p) => {
+                p.translate_to(a, t);
+            }
+            Node::Component(c) => {
+                let pivot = self.pivot_3d(a);
+                c.for_each_part(&mut |p| {
+                    let n = p.node();
+                    let sub = n.pivot_3d(a);
+                    n.translate_to(a, t + (sub - pivot));
+                });
+            }
+        }
+    }
+
+    /// Rotate by `q` about the pivot as a rigid block.
+    pub fn rotate_by(&self, a: &mut Arena, q: Rotation) {
+        match self {
+            Node::Panel(p) => {
+                p.rotate_by(a, q);
+            }
+            Node::Component(c) => {
+                let pivot = self.pivot_3d(a);
+                c.for_each_part(&mut |p| {
+                    let n = p.node();
+                    let rel = n.pivot_3d(a) - pivot;
+                    let rotated = q.apply(rel);
+                    n.rotate_by(a, q);
+                    n.translate_by(a, rotated - rel);
+                });
+            }
+        }
+    }
+
+    /// Mirror across the world plane x = 0.
+    pub fn mirror(&self, a: &mut Arena) {
+        match self {
+            Node::Panel(p) => {
+                p.mirror(a);
+            }
+            Node::Component(c) => c.for_each_part(&mut |p| p.node().mirror(a)),
+        }
+    }
+
+    /// Length: a panel's length, or the component's own notion of length.
+    pub fn length(&self, a: &Arena) -> f64 {
+        match self {
+            Node::Panel(p) => p.length(a),
+            Node::Component(c) => c.length(a),
+        }
+    }
+
+    /// Set the label of every panel (with `overwrite = false`, only empty labels).
+    pub fn set_panel_label(&self, a: &mut Arena, label: &str, overwrite: bool) {
+        match self {
+            Node::Panel(p) => p.set_label(a, label, overwrite),
+            Node::Component(c) => c.for_each_part(&mut |p| p.node().set_panel_label(a, label, overwrite)),
+        }
+    }
+
+    /// Whether any panel's outline crosses itself.
+    pub fn is_self_intersecting(&self, a: &Arena) -> bool {
+        match self {
+            Node::Panel(p) => p.is_self_intersecting(a),
+            Node::Component(c) => {
+                let mut any = false;
+                c.for_each_part(&mut |p| any = any || p.node().is_self_intersecting(a));
+                any
+            }
+        }
+    }
+
+    /// Every panel, in assembly order.
+    pub fn panels(&self, out: &mut Vec<PanelId>) {
+        match self {
+            Node::Panel(p) => out.push(*p),
+            Node::Component(c) => c.for_each_part(&mut |p| p.node().panels(out)),
+        }
+    }
+
+    /// Every stitch, in assembly order: a panel's darts; a component's parts' stitches
+    /// then its own.
+    pub fn stitches(&self, a: &Arena, out: &mut Vec<StitchRule>) {
+        match self {
+            Node::Panel(p) => out.extend_from_slice(p.stitches(a)),
+            Node::Component(c) => {
+                c.for_each_part(&mut |p| p.node().stitches(a, out));
+                out.extend(c.stitches());
+            }
+        }
+    }
+}
+
+/// Placement and assembly methods for every [`Part`].
+pub trait PartExt: Part {
+    /// See [`Node::translate_by`].
+    fn translate_by(&self, a: &mut Arena, d: Vec3) -> &Self {
+        self.node().translate_by(a, d);
+        self
+    }
+    /// See [`Node::translate_to`].
+    fn translate_to(&self, a: &mut Arena, t: Vec3) -> &Self {
+        self.node().translate_to(a, t);
+        self
+    }
+    /// See [`Node::rotate_by`].
+    fn rotate_by(&self, a: &mut Arena, q: Rotation) -> &Self {
+        self.node().rotate_by(a, q);
+        self
+    }
+    /// See [`Node::mirror`].
+    fn mirror(&self, a: &mut Arena) -> &Self {
+        self.node().mirror(a);
+        self
+    }
+    /// See [`Node::bbox3d`].
+    fn bbox3d(&self, a: &Arena) -> (Vec3, Vec3) {
+        self.node().bbox3d(a)
+    }
+    /// See [`Node::pivot_3d`].
+    fn pivot_3d(&self, a: &Arena) -> Vec3 {
+        self.node().pivot_3d(a)
+    }
+    /// See [`Node::length`].
+    fn part_length(&self, a: &Arena) -> f64 {
+        self.node().length(a)
+    }
+    /// See [`Node::set_panel_label`].
+    fn set_panel_label(&self, a: &mut Arena, label: &str, overwrite: bool) {
+        self.node().set_panel_label(a, label, overwrite)
+    }
+    /// See [`Node::is_self_intersecting`].
+    fn is_self_intersecting(&self, a: &Arena) -> bool {
+        self.node().is_self_intersecting(a)
+    }
+    /// Every panel in assembly order.
+    fn panel_ids(&self) -> Vec<PanelId> {
+        let mut out = Vec::new();
+        self.node().panels(&mut out);
+        out
+    }
+
+    /// Move down so that this part's top sits `gap` below `other`'s bottom.
+    fn place_below(&self, a: &mut Arena, other: &dyn Part, gap: f64) -> &Self {
+        let (olo, _) = other.node().bbox3d(a);
+        let (_, shi) = self.node().bbox3d(a);
+        self.node().translate_by(a, Vec3::new(0.0, olo.y - shi.y - gap, 0.0));
+        self
+    }
+
+    /// Move so that interface `own` meets interface `target`, aligned as asked and
+    /// `gap` outside along the interface's outward direction.
+    fn place_by_interface(&self, a: &mut Arena, own: InterfaceId, target: InterfaceId, gap: f64, align: Align) -> &Self {
+        let (slo, shi) = own.bbox3d(a);
+        let (olo, ohi) = target.bbox3d(a);
+        let mut p_out = (ohi + olo) / 2.0;
+        let mut p_self = (shi + slo) / 2.0;
+        match align {
+            Align::Center => {}
+            Align::Top => {
+                p_out.y = ohi.y;
+                p_self.y = shi.y;
+            }
+            Align::Bottom => {
+                p_out.y = olo.y;
+                p_self.y = slo.y;
+            }
+            Align::Right => {
+                p_out.x = olo.x;
+                p_self.x = slo.x;
+            }
+            Align::Left => {
+                p_out.x = ohi.x;
+                p_self.x = shi.x;
+            }
+        }
+        let (flo, fhi) = self.node().bbox3d(a);
+        let center = (flo + fhi) / 2.0;
+        let mid_self = (shi + slo) / 2.0;
+        let dir = mid_self - center;
+        let g = gap * dir / dir.length();
+        self.node().translate_by(a, p_out - (p_self + g));
+        self
+    }
+
+    /// Assemble into the flat sewing pattern named `name`. Panel pivots are reset as
+    /// the reference does (this moves vertices), so assemble a garment once.
+    fn assemble(&self, a: &mut Arena, name: &str) -> Result<Pattern> {
+        assemble(a, &self.node(), name)
+    }
+}
+
+impl<T: Part + ?Sized> PartExt for T {}
+
+/// Alignment for [`PartExt::place_by_interface`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Align {
+    /// Centre to centre.
+    Center,
+    /// Tops (max y) aligned.
+    Top,
+    /// Bottoms (min y) aligned.
+    Bottom,
+    /// Min x aligned (the wearer's right).
+    Right,
+    /// Max x aligned.
+    Left,
+}
+
+/// Assemble a part tree into a flat pattern.
+pub fn assemble(a: &mut Arena, root: &Node<'_>, name: &str) -> Result<Pattern> {
+    let mut panels = Vec::new();
+    root.panels(&mut panels);
+    let mut seen: Vec<PanelId> = Vec::with_capacity(panels.len());
+    let mut specs = Vec::with_capacity(panels.len());
+    for p in panels {
+        if seen.contains(&p) {
+            continue;
+        }
+        seen.push(p);
+        let spec = p.assemble(a)?;
+        if specs.iter().any(|s: &crate::pattern::PanelSpec| s.name == spec.name) {
+            return Err(Error::Design(format!("two panels are named '{}'", spec.name)));
+        }
+        specs.push(spec);
+    }
+    let mut rules = Vec::new();
+    root.stitches(a, &mut rules);
+    let mut records: Vec<StitchRecord> = Vec::new();
+    for r in &rules {
+        r.records(a, &mut records);
+    }
+    Ok(Pattern::from_parts(name, specs, records))
+}

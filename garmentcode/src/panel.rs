@@ -1,0 +1,454 @@
+//! Panels: one closed loop of edges (a piece of fabric) placed in 3D.
+//!
+//! Every placement call re-orients the loop so that the panel's normal points away
+//! from the world origin ("autonorm"): the right side of the fabric faces outward
+//! without the author thinking about loop directions. Pivot changes truncate to whole
+//! centimetres as the reference does, so written vertices match its files.
+
+use crate::arena::{Arena, EdgeId, InterfaceId, PanelId};
+use crate::error::Result;
+use crate::math::{Vec2, Vec3, trunc};
+use crate::rotation::Rotation;
+use crate::seq::EdgeSeq;
+use crate::stitch::StitchRule;
+
+/// Stored panel.
+#[derive(Clone, Debug)]
+pub(crate) struct PanelData {
+    pub name: String,
+    pub label: String,
+    pub translation: Vec3,
+    pub rotation: Rotation,
+    pub edges: EdgeSeq,
+    /// Named interfaces registered with the panel, in insertion order (corner cuts
+    /// update all of them and add new ones named `int_<n>`).
+    pub interfaces: Vec<(String, InterfaceId)>,
+    /// Stitches inside the panel (darts).
+    pub stitches: Vec<StitchRule>,
+    /// When set, the panel's "length" is this interface's length instead of its
+    /// bounding-box height.
+    pub length_interface: Option<InterfaceId>,
+}
+
+impl Arena {
+    /// A new empty panel at the origin.
+    pub fn new_panel(&mut self, name: &str) -> PanelId {
+        self.panels.push(PanelData {
+            name: name.to_string(),
+            label: String::new(),
+            translation: Vec3::ZERO,
+            rotation: Rotation::IDENTITY,
+            edges: EdgeSeq::new(),
+            interfaces: Vec::new(),
+            stitches: Vec::new(),
+            length_interface: None,
+        });
+        PanelId((self.panels.len() - 1) as u32)
+    }
+
+    /// A new panel with the given edge loop.
+    pub fn panel_with_edges(&mut self, name: &str, edges: EdgeSeq) -> PanelId {
+        let p = self.new_panel(name);
+        self.panels[p.0 as usize].edges = edges;
+        p
+    }
+
+    pub(crate) fn pd(&self, p: PanelId) -> &PanelData {
+        &self.panels[p.0 as usize]
+    }
+
+    pub(crate) fn pd_mut(&mut self, p: PanelId) -> &mut PanelData {
+        &mut self.panels[p.0 as usize]
+    }
+}
+
+impl PanelId {
+    /// Name of the panel.
+    pub fn name(self, a: &Arena) -> &str {
+        &a.pd(self).name
+    }
+
+    /// Rename the panel.
+    pub fn set_name(self, a: &mut Arena, name: &str) {
+        a.pd_mut(self).name = name.to_string();
+    }
+
+    /// Semantic label ("" when none).
+    pub fn label(self, a: &Arena) -> &str {
+        &a.pd(self).label
+    }
+
+    /// Set the label; with `overwrite = false` only an empty label is replaced.
+    pub fn set_label(self, a: &mut Arena, label: &str, overwrite: bool) {
+        let d = a.pd_mut(self);
+        if d.label.is_empty() || overwrite {
+            d.label = label.to_string();
+        }
+    }
+
+    /// The edge loop.
+    pub fn edges(self, a: &Arena) -> &EdgeSeq {
+        &a.pd(self).edges
+    }
+
+    /// Mutable edge loop.
+    pub fn edges_mut(self, a: &mut Arena) -> &mut EdgeSeq {
+        &mut a.pd_mut(self).edges
+    }
+
+    /// Replace the edge loop.
+    pub fn set_edges(self, a: &mut Arena, edges: EdgeSeq) {
+        a.pd_mut(self).edges = edges;
+    }
+
+    /// Translation (world position of the local origin).
+    pub fn translation(self, a: &Arena) -> Vec3 {
+        a.pd(self).translation
+    }
+
+    /// Rotation.
+    pub fn rotation(self, a: &Arena) -> Rotation {
+        a.pd(self).rotation
+    }
+
+    /// Register a named interface with the panel.
+    pub fn add_interface(self, a: &mut Arena, name: &str, i: InterfaceId) {
+        let d = a.pd_mut(self);
+        if let Some(slot) = d.interfaces.iter_mut().find(|(n, _)| n == name) {
+            slot.1 = i;
+        } else {
+            d.interfaces.push((name.to_string(), i));
+        }
+    }
+
+    /// A registered interface by name.
+    pub fn interface(self, a: &Arena, name: &str) -> Option<InterfaceId> {
+        a.pd(self).interfaces.iter().find(|(n, _)| n == name).map(|(_, i)| *i)
+    }
+
+    /// Names and ids of the registered interfaces.
+    pub fn interfaces(self, a: &Arena) -> &[(String, InterfaceId)] {
+        &a.pd(self).interfaces
+    }
+
+    /// Use this interface's length as the panel's length.
+    pub fn set_length_interface(self, a: &mut Arena, i: InterfaceId) {
+        a.pd_mut(self).length_interface = Some(i);
+    }
+
+    /// Stitches inside the panel (darts).
+    pub fn stitches(self, a: &Arena) -> &[StitchRule] {
+        &a.pd(self).stitches
+    }
+
+    /// Add a stitch inside the panel.
+    pub fn add_stitch(self, a: &mut Arena, rule: StitchRule) {
+        a.pd_mut(self).stitches.push(rule);
+    }
+
+    /// World position of a panel-local point.
+    pub fn point_to_3d(self, a: &Arena, p: Vec2) -> Vec3 {
+        let d = a.pd(self);
+        d.rotation.apply(Vec3::new(p.x, p.y, 0.0)) + d.translation
+    }
+
+    /// Move by `delta` (then re-orient the loop).
+    pub fn translate_by(self, a: &mut Arena, delta: Vec3) -> Self {
+        let d = a.pd_mut(self);
+        d.translation += delta;
+        self.autonorm(a);
+        self
+    }
+
+    /// Place the local origin at `t` (then re-orient the loop).
+    pub fn translate_to(self, a: &mut Arena, t: Vec3) -> Self {
+        a.pd_mut(self).translation = t;
+        self.autonorm(a);
+        self
+    }
+
+    /// Rotate by `q` about the local origin, in world frame (then re-orient).
+    pub fn rotate_by(self, a: &mut Arena, q: Rotation) -> Self {
+        let d = a.pd_mut(self);
+        d.rotation = q.compose(&d.rotation);
+        self.autonorm(a);
+        self
+    }
+
+    /// Set the rotation (then re-orient the loop).
+    pub fn rotate_to(self, a: &mut Arena, q: Rotation) -> Self {
+        a.pd_mut(self).rotation = q;
+        self.autonorm(a);
+        self
+    }
+
+    /// Rotate so that the panel normal points along `v`.
+    pub fn rotate_align(self, a: &mut Arena, v: Vec3) -> Self {
+        let v = v / v.length();
+        let n = self.norm(a);
+        self.rotate_by(a, Rotation::align(n, v))
+    }
+
+    /// Normal of the panel, estimated from the points on its bounding box (which
+    /// works for non-convex outlines).
+    pub fn norm(self, a: &Arena) -> Vec3 {
+        let (_, b2) = self.edges(a).bbox_points(a);
+        let b3: Vec<Vec3> = b2.iter().map(|p| self.point_to_3d(a, *p)).collect();
+        let m = b3.len();
+        let mut sum = Vec3::ZERO;
+        for p in &b3 {
+            sum += *p;
+        }
+        let c = sum / m as f64;
+        let norms: Vec<Vec3> = (0..m)
+            .map(|i| {
+                let n = (b3[i] - c).cross(b3[(i + 1) % m] - c);
+                n / n.length()
+            })
+            .collect();
+        let mut avg = Vec3::ZERO;
+        for n in &norms {
+            avg += *n;
+        }
+        avg /= m as f64;
+        if avg.length() < 1e-4 {
+            avg = norms[0];
+        }
+        let mut n = avg / avg.length();
+        for k in 0..3 {
+            if n[k].abs() <= 1e-8 {
+                n[k] = 0.0;
+            }
+        }
+        n
+    }
+
+    /// Reverse the loop if the normal points toward the world origin.
+    pub fn autonorm(self, a: &mut Arena) {
+        let n = self.norm(a);
+        if n.dot(a.pd(self).translation) < 0.0 {
+            let mut edges = std::mem::take(&mut a.pd_mut(self).edges);
+            edges.reverse(a);
+            a.pd_mut(self).edges = edges;
+        }
+    }
+
+    /// Move the local origin to `p`, shifting vertices by the *truncated* `p`
+    /// (reference quirk); with `keep_placement` the translation becomes the world
+    /// position of `p` so the panel stays where it was (up to the fractional part).
+    pub fn set_pivot(self, a: &mut Arena, p: Vec2, keep_placement: bool) {
+        if keep_placement {
+            let t = self.point_to_3d(a, p);
+            a.pd_mut(self).translation = t;
+        }
+        let shift = Vec2::new(trunc(p.x), trunc(p.y));
+        for v in self.edges(a).verts(a) {
+            let q = a.pos(v);
+            a.set_pos(v, Vec2::new(q.x - shift.x, q.y - shift.y));
+        }
+    }
+
+    /// Pivot at the middle of whichever side of the (vertex) bounding box is highest
+    /// in 3D.
+    pub fn top_center_pivot(self, a: &mut Arena) -> Self {
+        let pts = self.edges(a).vert_positions(a);
+        let (mut lo, mut hi) = (pts[0], pts[0]);
+        for p in &pts {
+            lo = lo.min(*p);
+            hi = hi.max(*p);
+        }
+        let mid = Vec2::new((hi.x + lo.x) / 2.0, (hi.y + lo.y) / 2.0);
+        let candidates = [Vec2::new(mid.x, hi.y), Vec2::new(mid.x, lo.y), Vec2::new(hi.x, mid.y), Vec2::new(lo.x, mid.y)];
+        let mut best = 0;
+        let mut best_y = f64::NEG_INFINITY;
+        for (i, c) in candidates.iter().enumerate() {
+            let y = self.point_to_3d(a, *c).y;
+            if y > best_y {
+                best_y = y;
+                best = i;
+            }
+        }
+        self.set_pivot(a, candidates[best], false);
+        self
+    }
+
+    /// Approximate centre: mean of the loop vertices with three extra points per edge.
+    pub fn center_2d(self, a: &Arena) -> Vec2 {
+        let pts = self.edges(a).linearized_positions_n(a, Some(3));
+        let mut s = Vec2::ZERO;
+        for p in &pts {
+            s += *p;
+        }
+        s / pts.len() as f64
+    }
+
+    /// Shift along x so the panel's centre sits on the body's centre line.
+    pub fn center_x(self, a: &mut Arena) -> Self {
+        let c = self.point_to_3d(a, self.center_2d(a));
+        a.pd_mut(self).translation.x += -c.x;
+        self
+    }
+
+    /// 2D bounding box of the linearised loop.
+    pub fn bbox(self, a: &Arena) -> (Vec2, Vec2) {
+        let pts = self.edges(a).linearized_positions(a);
+        let (mut lo, mut hi) = (pts[0], pts[0]);
+        for p in &pts {
+            lo = lo.min(*p);
+            hi = hi.max(*p);
+        }
+        (lo, hi)
+    }
+
+    /// 3D bounding box of the linearised loop.
+    pub fn bbox3d(self, a: &Arena) -> (Vec3, Vec3) {
+        let pts = self.edges(a).linearized_positions(a);
+        let mut lo = Vec3::splat(f64::INFINITY);
+        let mut hi = Vec3::splat(f64::NEG_INFINITY);
+        for p in pts {
+            let w = self.point_to_3d(a, p);
+            lo = lo.min(w);
+            hi = hi.max(w);
+        }
+        (lo, hi)
+    }
+
+    /// Length of the panel: its bounding-box height, or the length of its length
+    /// interface when one was set.
+    pub fn length(self, a: &Arena) -> f64 {
+        if let Some(i) = a.pd(self).length_interface {
+            return i.length(a);
+        }
+        let (lo, hi) = self.bbox(a);
+        (hi.y - lo.y).abs()
+    }
+
+    /// Mirror across the world plane x = 0 (local y axis), keeping the fabric's right
+    /// side outward.
+    pub fn mirror(self, a: &mut Arena) -> Self {
+        let edges = a.pd(self).edges.clone();
+        edges.reflect(a, Vec2::ZERO, Vec2::Y);
+        a.pd_mut(self).translation.x *= -1.0;
+        let mut e = a.pd(self).rotation.as_euler_xyz();
+        e[1] *= -1.0;
+        e[2] *= -1.0;
+        self.rotate_to(a, Rotation::from_euler_xyz(e));
+        self.autonorm(a);
+        self
+    }
+
+    /// Insert a dart shape into `edge` centred at arc length `offset`, and stitch its
+    /// two legs together. Returns the edges replacing `edge` and the leftover pieces
+    /// of the original edge. The panel loop is not modified (callers substitute).
+    pub fn add_dart(self, a: &mut Arena, shape: &EdgeSeq, edge: EdgeId, offset: f64, right: bool) -> Result<(EdgeSeq, EdgeSeq)> {
+        let cut = crate::ops::cut_into_edge(a, shape, edge, offset, right)?;
+        let l0 = a.interface(self, cut.shape[0]);
+        let l1 = a.interface(self, cut.shape[1]);
+        let rule = StitchRule::new(a, l0, l1)?;
+        self.add_stitch(a, rule);
+        Ok((cut.edges, cut.leftovers))
+    }
+
+    /// Whether the outline crosses itself (the reference's check: arcs replaced by 11
+    /// straight pieces, every pair of pieces intersected, shared vertices ignored).
+    pub fn is_self_intersecting(self, a: &Arena) -> bool {
+        crate::intersect::has_self_intersection(&crate::intersect::panel_segments(a, self))
+    }
+
+    /// Deep copy under a new name: new edges, vertices, interfaces and darts.
+    pub fn deep_copy(self, a: &mut Arena, name: &str) -> PanelId {
+        let src = a.pd(self).clone();
+        let new_edges = a.copy_edges(&src.edges);
+        let map: Vec<(EdgeId, EdgeId)> = src.edges.iter().copied().zip(new_edges.iter().copied()).collect();
+        let new = a.new_panel(name);
+        let map_iface = |a: &mut Arena, i: InterfaceId| -> InterfaceId {
+            let mut d = a.iface(i).clone();
+            for e in d.edges.iter_mut() {
+                if let Some((_, n)) = map.iter().find(|(o, _)| o == e) {
+                    *e = *n;
+                }
+            }
+            for p in d.panels.iter_mut() {
+                if *p == self {
+                    *p = new;
+                }
+            }
+            a.interfaces.push(d);
+            InterfaceId((a.interfaces.len() - 1) as u32)
+        };
+        let interfaces: Vec<(String, InterfaceId)> =
+            src.interfaces.iter().map(|(n, i)| (n.clone(), map_iface(a, *i))).collect();
+        let stitches: Vec<StitchRule> =
+            src.stitches.iter().map(|r| StitchRule { a: map_iface(a, r.a), b: map_iface(a, r.b) }).collect();
+        let length_interface = src.length_interface.map(|i| {
+            src.interfaces.iter().position(|(_, j)| *j == i).map(|k| interfaces[k].1).unwrap_or(i)
+        });
+        let d = a.pd_mut(new);
+        d.label = src.label;
+        d.translation = src.translation;
+        d.rotation = src.rotation;
+        d.edges = EdgeSeq(new_edges);
+        d.interfaces = interfaces;
+        d.stitches = stitches;
+        d.length_interface = length_interface;
+        new
+    }
+}
+
+impl PanelId {
+    /// Flatten into the written panel: reset the pivot to the first vertex (with the
+    /// reference's truncation), write vertices once each (consecutive equal
+    /// coordinates merged) and record every edge's index for stitches.
+    pub fn assemble(self, a: &mut Arena) -> Result<crate::pattern::PanelSpec> {
+        use crate::pattern::{Curvature, EdgeSpec, PanelSpec};
+        let name = self.name(a).to_string();
+        if self.edges(a).is_empty() {
+            return Err(crate::error::Error::Design(format!("panel '{name}' has no edges")));
+        }
+        let first = a.pos(a.start(self.edges(a)[0]));
+        self.set_pivot(a, first, true);
+        let edges = self.edges(a).clone();
+        let mut vertices: Vec<Vec2> = vec![a.pos(a.start(edges[0]))];
+        let mut specs = Vec::with_capacity(edges.len());
+        for (i, &e) in edges.iter().enumerate() {
+            let g = a.geom(e);
+            let shift = if *vertices.last().expect("non-empty") == g.start {
+                vertices.push(g.end);
+                vertices.len() - 2
+            } else {
+                vertices.push(g.start);
+                vertices.push(g.end);
+                vertices.len() - 2
+            };
+            a.edges[e.0 as usize].geometric_id = i as u32;
+            let curvature = match g.curve {
+                crate::edge::Curve::Line => None,
+                crate::edge::Curve::Arc { .. } => {
+                    let (r, large, right) = g.arc_radius_flags().expect("arc");
+                    Some(Curvature::Circle { radius: r, large_arc: large, right })
+                }
+                crate::edge::Curve::Quadratic(c) => Some(Curvature::Quadratic(c.into())),
+                crate::edge::Curve::Cubic(c1, c2) => Some(Curvature::Cubic(c1.into(), c2.into())),
+            };
+            let label = a.edge_label(e);
+            specs.push(EdgeSpec {
+                endpoints: [shift, shift + 1],
+                label: (!label.is_empty()).then(|| label.to_string()),
+                curvature,
+            });
+        }
+        if vertices.len() > 1 && vertices.last() == vertices.first() {
+            vertices.pop();
+            specs.last_mut().expect("non-empty").endpoints[1] = 0;
+        }
+        let d = a.pd(self);
+        Ok(PanelSpec {
+            name,
+            translation: d.translation.into(),
+            rotation: d.rotation.as_euler_xyz_degrees(),
+            vertices: vertices.into_iter().map(|v| v.into()).collect(),
+            edges: specs,
+            label: (!d.label.is_empty()).then(|| d.label.clone()),
+        })
+    }
+}

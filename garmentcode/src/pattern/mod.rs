@@ -1,0 +1,217 @@
+//! The flat sewing pattern: the reference's `specification.json`.
+//!
+//! [`Pattern`] is what a garment assembles into and what the file holds: panels
+//! (2D outline with relative curvature and a 3D placement), stitches between panel
+//! edges, the panel order and format properties. It reads any reference-written file
+//! ([`Pattern::from_json`]) and writes the same layout ([`Pattern::to_json`]),
+//! deterministically.
+
+mod json;
+mod order;
+mod validate;
+
+pub use order::panel_order;
+pub use validate::{Problem, ProblemKind, Severity, validate};
+
+use crate::arc;
+use crate::edge::{Curve, Edge};
+use crate::math::Vec2;
+use crate::rotation::Rotation;
+use crate::stitch::StitchRecord;
+
+/// A whole sewing pattern.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pattern {
+    /// Name of the pattern (the garment's name; not written in the file).
+    pub name: String,
+    /// Panels in file order.
+    pub panels: Vec<PanelSpec>,
+    /// Stitches.
+    pub stitches: Vec<StitchSpec>,
+    /// Deterministic panel order by 3D location (written after the stitches).
+    pub panel_order: Option<Vec<String>>,
+    /// Legacy parametric-template parameters (always `{}` for GarmentCode output).
+    pub parameters: serde_json::Value,
+    /// Legacy parameter order (always `[]`).
+    pub parameter_order: serde_json::Value,
+    /// Format properties.
+    pub properties: Properties,
+}
+
+/// Format flags of a specification file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Properties {
+    /// `relative` (written) or `absolute` (legacy files).
+    pub curvature_coords: String,
+    /// Legacy re-centring flag (written `false`).
+    pub normalize_panel_translation: bool,
+    /// Loops already normalised (written `true`).
+    pub normalized_edge_loops: bool,
+    /// Units of the file: 100 = centimetres.
+    pub units_in_meter: f64,
+    /// Any other keys, kept as read.
+    pub extra: Vec<(String, serde_json::Value)>,
+}
+
+impl Default for Properties {
+    fn default() -> Self {
+        Properties {
+            curvature_coords: "relative".into(),
+            normalize_panel_translation: false,
+            normalized_edge_loops: true,
+            units_in_meter: 100.0,
+            extra: Vec::new(),
+        }
+    }
+}
+
+/// One panel as written.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PanelSpec {
+    /// Unique panel name.
+    pub name: String,
+    /// World position of the local origin (cm).
+    pub translation: [f64; 3],
+    /// Intrinsic `XYZ` Euler angles, degrees.
+    pub rotation: [f64; 3],
+    /// Local 2D vertices (cm).
+    pub vertices: Vec<[f64; 2]>,
+    /// Outline edges in loop order.
+    pub edges: Vec<EdgeSpec>,
+    /// Semantic label (`body`, `arm`, `leg`...).
+    pub label: Option<String>,
+}
+
+/// One edge as written.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EdgeSpec {
+    /// Start and end vertex indices.
+    pub endpoints: [usize; 2],
+    /// Semantic label.
+    pub label: Option<String>,
+    /// Curvature; `None` for a straight edge.
+    pub curvature: Option<Curvature>,
+}
+
+/// Curvature of a written edge, in the edge's relative frame.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Curvature {
+    /// Quadratic Bézier: one relative control point.
+    Quadratic([f64; 2]),
+    /// Cubic Bézier: two relative control points.
+    Cubic([f64; 2], [f64; 2]),
+    /// Circular arc: absolute radius, large-arc flag, bulges to the right.
+    Circle {
+        /// Radius in cm.
+        radius: f64,
+        /// Spans more than 180°.
+        large_arc: bool,
+        /// Bulges to the right of start → end.
+        right: bool,
+    },
+}
+
+/// One written stitch.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub struct StitchSpec {
+    /// Both sides: panel name and edge index.
+    pub sides: [StitchSide; 2],
+    /// One fabric is flipped (`"right_wrong"`).
+    pub right_wrong: bool,
+}
+
+/// One side of a stitch.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct StitchSide {
+    /// Panel name.
+    pub panel: String,
+    /// Edge index in the panel's `edges`.
+    pub edge: usize,
+}
+
+impl Pattern {
+    /// An empty pattern.
+    pub fn new(name: &str) -> Pattern {
+        Pattern {
+            name: name.to_string(),
+            panels: Vec::new(),
+            stitches: Vec::new(),
+            panel_order: None,
+            parameters: serde_json::Value::Object(Default::default()),
+            parameter_order: serde_json::Value::Array(Vec::new()),
+            properties: Properties::default(),
+        }
+    }
+
+    /// Pattern from assembled panels and stitch records, with its panel order.
+    pub fn from_parts(name: &str, panels: Vec<PanelSpec>, stitches: Vec<StitchRecord>) -> Pattern {
+        let mut p = Pattern::new(name);
+        p.panels = panels;
+        p.stitches = stitches
+            .into_iter()
+            .map(|r| StitchSpec {
+                sides: r.sides.map(|(panel, edge)| StitchSide { panel, edge }),
+                right_wrong: r.right_wrong,
+            })
+            .collect();
+        if !p.panels.is_empty() {
+            p.panel_order = Some(panel_order(&p));
+        }
+        p
+    }
+
+    /// A panel by name.
+    pub fn panel(&self, name: &str) -> Option<&PanelSpec> {
+        self.panels.iter().find(|p| p.name == name)
+    }
+
+    /// No panels.
+    pub fn is_empty(&self) -> bool {
+        self.panels.is_empty()
+    }
+}
+
+impl PanelSpec {
+    /// Vertex `i` as a point.
+    pub fn vertex(&self, i: usize) -> Vec2 {
+        Vec2::from(self.vertices[i])
+    }
+
+    /// Geometry of edge `i` (indices must be valid: see [`validate`]).
+    pub fn edge_geom(&self, i: usize) -> Edge {
+        let e = &self.edges[i];
+        let (s, t) = (self.vertex(e.endpoints[0]), self.vertex(e.endpoints[1]));
+        let curve = match &e.curvature {
+            None => Curve::Line,
+            Some(Curvature::Quadratic(c)) => Curve::Quadratic(Vec2::from(*c)),
+            Some(Curvature::Cubic(c1, c2)) => Curve::Cubic(Vec2::from(*c1), Vec2::from(*c2)),
+            Some(Curvature::Circle { radius, large_arc, right }) => {
+                Curve::Arc { cy: arc::cy_from_radius(s, t, *radius, *large_arc, *right) }
+            }
+        };
+        Edge { start: s, end: t, curve }
+    }
+
+    /// Rotation of the panel.
+    pub fn rotation(&self) -> Rotation {
+        Rotation::from_euler_xyz_degrees(self.rotation)
+    }
+
+    /// World position of a local point.
+    pub fn point_to_3d(&self, p: Vec2) -> crate::math::Vec3 {
+        self.rotation().apply(crate::math::Vec3::new(p.x, p.y, 0.0)) + crate::math::Vec3::from(self.translation)
+    }
+
+    /// Edge-type string (`L`, `A`, `Q`, `C` per edge).
+    pub fn edge_types(&self) -> String {
+        self.edges
+            .iter()
+            .map(|e| match e.curvature {
+                None => 'L',
+                Some(Curvature::Quadratic(_)) => 'Q',
+                Some(Curvature::Cubic(..)) => 'C',
+                Some(Curvature::Circle { .. }) => 'A',
+            })
+            .collect()
+    }
+}

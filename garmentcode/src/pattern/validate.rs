@@ -1,0 +1,243 @@
+//! Validation of a pattern: structural errors that make it unusable, and warnings
+//! about things a pattern maker should look at (crossing outlines, seams whose two
+//! sides differ in length).
+
+use super::Pattern;
+use crate::intersect;
+use std::collections::HashMap;
+use std::fmt;
+
+/// How serious a problem is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Severity {
+    /// The pattern cannot be used as it is.
+    Error,
+    /// Worth a look; the pattern is usable.
+    Warning,
+}
+
+/// Stable kinds of problems (the `kind` of the JSON report).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum ProblemKind {
+    /// The pattern has no panels.
+    EmptyPattern,
+    /// A panel with no edges or fewer than two vertices.
+    EmptyPanel,
+    /// An edge's end is not the next edge's start.
+    OpenLoop,
+    /// An edge refers to a vertex that does not exist.
+    VertexOutOfRange,
+    /// An edge whose two end points coincide.
+    DegenerateEdge,
+    /// A stitch names a panel that does not exist.
+    UnknownPanel,
+    /// A stitch names an edge that does not exist.
+    EdgeOutOfRange,
+    /// An edge used by more than one stitch (or twice by one).
+    EdgeStitchedTwice,
+    /// `panel_order` does not list exactly the panels.
+    PanelOrderMismatch,
+    /// A panel outline crosses itself.
+    SelfIntersection,
+    /// The two edges of a stitch have different lengths (a gather, or a mistake).
+    StitchLengthMismatch,
+}
+
+impl ProblemKind {
+    /// Snake-case name used in reports.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ProblemKind::EmptyPattern => "empty_pattern",
+            ProblemKind::EmptyPanel => "empty_panel",
+            ProblemKind::OpenLoop => "open_loop",
+            ProblemKind::VertexOutOfRange => "vertex_out_of_range",
+            ProblemKind::DegenerateEdge => "degenerate_edge",
+            ProblemKind::UnknownPanel => "unknown_panel",
+            ProblemKind::EdgeOutOfRange => "edge_out_of_range",
+            ProblemKind::EdgeStitchedTwice => "edge_stitched_twice",
+            ProblemKind::PanelOrderMismatch => "panel_order_mismatch",
+            ProblemKind::SelfIntersection => "self_intersection",
+            ProblemKind::StitchLengthMismatch => "stitch_length_mismatch",
+        }
+    }
+}
+
+/// One problem found in a pattern.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Problem {
+    /// What kind of problem.
+    pub kind: ProblemKind,
+    /// Error or warning.
+    pub severity: Severity,
+    /// Panel concerned, if any.
+    pub panel: Option<String>,
+    /// Edge concerned (index in the panel), if any.
+    pub edge: Option<usize>,
+    /// Stitch concerned (index in `stitches`), if any.
+    pub stitch: Option<usize>,
+    /// Length ratio of the stitch sides (side 1 / side 2), for length mismatches.
+    pub ratio: Option<f64>,
+    /// Human-readable explanation.
+    pub message: String,
+}
+
+impl fmt::Display for Problem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let sev = match self.severity {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        };
+        write!(f, "{sev}[{}]", self.kind.as_str())?;
+        if let Some(p) = &self.panel {
+            write!(f, " panel '{p}'")?;
+        }
+        if let Some(e) = self.edge {
+            write!(f, " edge {e}")?;
+        }
+        if let Some(s) = self.stitch {
+            write!(f, " stitch {s}")?;
+        }
+        write!(f, ": {}", self.message)
+    }
+}
+
+/// Relative length difference between stitched edges reported as a warning.
+const LENGTH_TOLERANCE: f64 = 0.01;
+
+/// All problems of a pattern, errors first (each group in file order).
+pub fn validate(p: &Pattern) -> Vec<Problem> {
+    let mut out = Vec::new();
+    let err = |kind, panel: Option<&str>, edge, stitch, message: String| Problem {
+        kind,
+        severity: Severity::Error,
+        panel: panel.map(str::to_string),
+        edge,
+        stitch,
+        ratio: None,
+        message,
+    };
+    if p.panels.is_empty() {
+        out.push(err(ProblemKind::EmptyPattern, None, None, None, "the pattern has no panels".into()));
+    }
+    let mut structurally_ok: HashMap<&str, bool> = HashMap::new();
+    for panel in &p.panels {
+        let mut ok = true;
+        let name = panel.name.as_str();
+        let nv = panel.vertices.len();
+        if panel.edges.is_empty() || nv < 2 {
+            out.push(err(ProblemKind::EmptyPanel, Some(name), None, None, format!("{} edges and {nv} vertices", panel.edges.len())));
+            ok = false;
+        }
+        for (i, e) in panel.edges.iter().enumerate() {
+            for &v in &e.endpoints {
+                if v >= nv {
+                    out.push(err(ProblemKind::VertexOutOfRange, Some(name), Some(i), None, format!("vertex {v} does not exist (the panel has {nv})")));
+                    ok = false;
+                }
+            }
+        }
+        if ok {
+            let n = panel.edges.len();
+            for (i, e) in panel.edges.iter().enumerate() {
+                let next = &panel.edges[(i + 1) % n];
+                let (end, start) = (panel.vertices[e.endpoints[1]], panel.vertices[next.endpoints[0]]);
+                if e.endpoints[1] != next.endpoints[0] && end != start {
+                    out.push(err(
+                        ProblemKind::OpenLoop,
+                        Some(name),
+                        Some(i),
+                        None,
+                        format!("ends at vertex {} but edge {} starts at vertex {}", e.endpoints[1], (i + 1) % n, next.endpoints[0]),
+                    ));
+                    ok = false;
+                }
+                let (s, t) = (panel.vertices[e.endpoints[0]], panel.vertices[e.endpoints[1]]);
+                if (s[0] - t[0]).abs() < 1e-4 && (s[1] - t[1]).abs() < 1e-4 {
+                    out.push(err(ProblemKind::DegenerateEdge, Some(name), Some(i), None, "start and end coincide".into()));
+                    ok = false;
+                }
+            }
+        }
+        structurally_ok.insert(name, ok);
+    }
+    let mut used: HashMap<(&str, usize), usize> = HashMap::new();
+    for (si, s) in p.stitches.iter().enumerate() {
+        for side in &s.sides {
+            match p.panel(&side.panel) {
+                None => out.push(err(ProblemKind::UnknownPanel, Some(&side.panel), Some(side.edge), Some(si), "no panel with this name".into())),
+                Some(panel) if side.edge >= panel.edges.len() => out.push(err(
+                    ProblemKind::EdgeOutOfRange,
+                    Some(&side.panel),
+                    Some(side.edge),
+                    Some(si),
+                    format!("the panel has {} edges", panel.edges.len()),
+                )),
+                Some(_) => {
+                    if let Some(first) = used.insert((side.panel.as_str(), side.edge), si) {
+                        out.push(err(
+                            ProblemKind::EdgeStitchedTwice,
+                            Some(&side.panel),
+                            Some(side.edge),
+                            Some(si),
+                            format!("already used by stitch {first}"),
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    if let Some(order) = &p.panel_order {
+        let mut a: Vec<&str> = order.iter().map(String::as_str).collect();
+        let mut b: Vec<&str> = p.panels.iter().map(|x| x.name.as_str()).collect();
+        a.sort_unstable();
+        b.sort_unstable();
+        if a != b {
+            out.push(err(ProblemKind::PanelOrderMismatch, None, None, None, "panel_order does not list exactly the pattern's panels".into()));
+        }
+    }
+
+    // Warnings, only on structurally sound panels.
+    for panel in &p.panels {
+        if structurally_ok.get(panel.name.as_str()) == Some(&true) && intersect::has_self_intersection(&intersect::spec_segments(panel)) {
+            out.push(Problem {
+                kind: ProblemKind::SelfIntersection,
+                severity: Severity::Warning,
+                panel: Some(panel.name.clone()),
+                edge: None,
+                stitch: None,
+                ratio: None,
+                message: "the outline crosses itself".into(),
+            });
+        }
+    }
+    for (si, s) in p.stitches.iter().enumerate() {
+        let len = |side: &super::StitchSide| {
+            p.panel(&side.panel)
+                .filter(|pp| side.edge < pp.edges.len() && structurally_ok.get(pp.name.as_str()) == Some(&true))
+                .map(|pp| pp.edge_geom(side.edge).length())
+        };
+        if let (Some(l1), Some(l2)) = (len(&s.sides[0]), len(&s.sides[1])) {
+            let ratio = l1 / l2;
+            if (ratio - 1.0).abs() > LENGTH_TOLERANCE {
+                out.push(Problem {
+                    kind: ProblemKind::StitchLengthMismatch,
+                    severity: Severity::Warning,
+                    panel: Some(s.sides[0].panel.clone()),
+                    edge: Some(s.sides[0].edge),
+                    stitch: Some(si),
+                    ratio: Some(ratio),
+                    message: format!(
+                        "{:.2} cm stitched to {:.2} cm ({}:{}), ratio {ratio:.3}{}",
+                        l1,
+                        l2,
+                        s.sides[1].panel,
+                        s.sides[1].edge,
+                        if ratio > 1.0 { " (gathered)" } else { "" }
+                    ),
+                });
+            }
+        }
+    }
+    out.sort_by_key(|pr| pr.severity);
+    out
+}

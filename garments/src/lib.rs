@@ -1,0 +1,1 @@
+//! The GarmentCode garment library.
