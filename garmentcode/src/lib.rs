@@ -18,6 +18,7 @@ pub mod arena;
 pub mod bezier;
 pub mod component;
 pub mod curves;
+pub mod draw;
 pub mod edge;
 pub mod error;
 pub mod interface;
