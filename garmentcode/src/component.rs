@@ -58,16 +58,6 @@ pub trait Component {
     /// The component's own stitches, in creation order.
     fn stitches(&self) -> Vec<StitchRule>;
 
-    /// An interface by name (for tools); `None` if the component has no such interface.
-    fn interface(&self, _name: &str) -> Option<InterfaceId> {
-        None
-    }
-
-    /// Names of the interfaces the component exposes.
-    fn interface_names(&self) -> Vec<&'static str> {
-        Vec::new()
-    }
-
     /// Vertical length of the component, by default the sum of its parts' lengths.
     fn length(&self, a: &Arena) -> f64 {
         let mut total = 0.0;
@@ -75,6 +65,36 @@ pub trait Component {
         total
     }
 }
+
+/// Interfaces a component or panel class exposes, by name (for tools).
+pub trait Interfaces {
+    /// An interface by name; `None` if there is no such interface.
+    fn interface(&self, name: &str) -> Option<InterfaceId>;
+    /// Names of the exposed interfaces, in declaration order.
+    fn interface_names(&self) -> &'static [&'static str];
+}
+
+/// A component that fills slot `S` (a marker type from [`crate::slots`] or your
+/// own): it exposes the interface that slot connects through. Requiring
+/// `Slot<Top>` of a bottom garment makes plugging in a component without a `top`
+/// interface a compile error.
+pub trait Slot<S> {
+    /// The interface filling the slot.
+    fn slot(&self) -> InterfaceId;
+}
+
+/// `x.iface::<Top>()` instead of `Slot::<Top>::slot(&x)`.
+pub trait SlotExt {
+    /// The interface filling slot `S`.
+    fn iface<S>(&self) -> InterfaceId
+    where
+        Self: Slot<S>,
+    {
+        Slot::<S>::slot(self)
+    }
+}
+
+impl<T: ?Sized> SlotExt for T {}
 
 /// Collects `&dyn Part`s from component fields of various shapes (a part, an
 /// optional part, a list of parts); used by the derive macro.

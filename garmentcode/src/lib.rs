@@ -13,9 +13,14 @@
 
 #![warn(missing_docs)]
 
+// Lets the derive macros' generated code name this crate as `::garmentcode` inside
+// the crate's own tests and examples too.
+extern crate self as garmentcode;
+
 pub mod arc;
 pub mod arena;
 pub mod bezier;
+pub mod body;
 pub mod component;
 pub mod curves;
 pub mod draw;
@@ -26,13 +31,16 @@ pub mod intersect;
 pub mod math;
 pub mod ops;
 pub mod panel;
+pub mod params;
 pub mod pattern;
 pub mod rotation;
 pub mod seq;
+pub mod slots;
 pub mod stitch;
+pub mod yaml;
 
 pub use arena::{Arena, EdgeId, InterfaceId, PanelId, VertexId};
-pub use component::{Align, Component, Node, Part, PartExt, Parts};
+pub use component::{Align, Component, Interfaces, Node, Part, PartExt, Parts, Slot, SlotExt};
 pub use edge::{Curve, Edge};
 pub use error::{Error, Result};
 pub use interface::{Gather, Ruffle};
@@ -41,3 +49,19 @@ pub use pattern::Pattern;
 pub use rotation::Rotation;
 pub use seq::EdgeSeq;
 pub use stitch::StitchRule;
+pub use body::Body;
+pub use params::{Choice, DesignSpace, Params};
+
+/// Derive macros: `#[derive(Params)]`, `#[derive(Choice)]`, `#[derive(Component)]`
+/// and `#[component]`.
+#[cfg(feature = "derive")]
+pub use garmentcode_derive::{Choice, Component, Params, component};
+
+/// Paths used by the derive macros' generated code. Not a public API.
+#[doc(hidden)]
+pub mod __private {
+    pub use crate::arena::{Arena, InterfaceId, PanelId};
+    pub use crate::component::{Component, Interfaces, Node, Part, Parts, Slot};
+    pub use crate::params::{Choice, Kind, ParamSpec, ParamValue, Params, Range, Value, join_path};
+    pub use crate::stitch::StitchRule;
+}

@@ -1,34 +1,38 @@
 //! Curve helpers: quadratic Béziers fitted to end tangents (the reference's
-//! `curve_from_tangents`), a quadratic with a prescribed extremum, and the cubic
+//! `curve_from_tangents`), a quadratic through a prescribed extremum, and the cubic
 //! re-fit to end tangents at a fixed length that inverts sleeve openings.
-//!
-//! PROVISIONAL implementations; the scipy-faithful BFGS and the sleeve inversion
-//! optimiser replace them.
 
-use crate::math::{Vec2, abs_to_rel_vector, cross, norm};
+pub mod bfgs;
+
+use crate::math::{Vec2, abs_to_rel_vector, norm};
 
 /// Relative control point of the quadratic from `start` to `end` whose end tangents
-/// follow `tan0` (at the start) and/or `tan1` (at the end).
+/// follow `tan0` (at the start) and/or `tan1` (at the end), found from `initial` as
+/// the reference finds it (scipy's BFGS on the tangent misfit). With one tangent
+/// every point of a ray fits exactly; the optimiser's path decides which one, so
+/// the path is reproduced faithfully.
 pub fn quadratic_from_tangents(start: Vec2, end: Vec2, tan0: Option<Vec2>, tan1: Option<Vec2>, initial: Vec2) -> Vec2 {
-    let t0 = tan0.map(|t| {
+    let rel = |t: Vec2| {
         let r = abs_to_rel_vector(start, end, t);
-        r / norm(r)
-    });
-    let t1 = tan1.map(|t| {
-        let r = abs_to_rel_vector(start, end, t);
-        r / norm(r)
-    });
-    match (t0, t1) {
-        (Some(a), Some(b)) => {
-            // a·s = (1,0) − b·u  →  s·a + u·b = (1,0)
-            let det = cross(a, b);
-            let s = cross(Vec2::X, b) / det;
-            a * s
-        }
-        (Some(a), None) => a * initial.dot(a).max(1e-3),
-        (None, Some(b)) => Vec2::X - b * (Vec2::X - initial).dot(b).max(1e-3),
-        (None, None) => initial,
+        let n = norm(r);
+        [r.x / n, r.y / n]
+    };
+    let cp = bfgs::fit_quadratic_tangents(tan0.map(rel), tan1.map(rel), [initial.x, initial.y]);
+    Vec2::new(cp[0], cp[1])
+}
+
+/// Relative control point of the quadratic from (0,0) to (1,0) in the edge frame
+/// whose extremum (the point farthest from the chord) is the relative point `p`:
+/// `B(½) = p` with the control point straight above the chord midpoint, i.e.
+/// control `(p.x·2 − ½, 2·p.y)` when `p.x = ½`; in general the control point is
+/// found so that the curve's y-extremum lies at `p`.
+pub fn quadratic_with_extremum(p: Vec2) -> Option<Vec2> {
+    // For B(t) = 2t(1−t)c + t²(1,0): y(t) = 2t(1−t)c_y has its extremum at t = ½
+    // with value c_y/2, where x(½) = c_x/2 + ¼. So c = (2(p_x − ¼), 2 p_y).
+    if !(0.0..=1.0).contains(&p.x) || p.y == 0.0 {
+        return None;
     }
+    Some(Vec2::new(2.0 * (p.x - 0.25), 2.0 * p.y))
 }
 
 /// Cubic control points re-fitted to end tangents `t0`, `t1` at length `target_len`.

@@ -10,6 +10,7 @@ mod json;
 mod order;
 mod validate;
 
+pub use json::python_float_repr;
 pub use order::panel_order;
 pub use validate::{Problem, ProblemKind, Severity, validate};
 

@@ -1,0 +1,5 @@
+//! Code generation for each derive.
+
+pub mod choice;
+pub mod component;
+pub mod params;

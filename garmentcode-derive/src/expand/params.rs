@@ -1,0 +1,166 @@
+//! `#[derive(Params)]`: schema, defaults and typed access by path.
+
+use crate::internals::number;
+use crate::internals::param::{Field, LeafType, parse_struct};
+use proc_macro2::TokenStream;
+use quote::{quote, quote_spanned};
+use syn::spanned::Spanned;
+use syn::{DeriveInput, Expr, GenericArgument, PathArguments, Type};
+
+pub fn derive(input: &DeriveInput) -> TokenStream {
+    let ident = &input.ident;
+    let (impl_g, ty_g, where_g) = input.generics.split_for_impl();
+    let model = match parse_struct(input) {
+        Ok(m) => m,
+        Err(e) => {
+            // The error plus a stub impl, so uses of the type do not cascade.
+            let err = e.to_compile_error();
+            return quote! {
+                #err
+                impl #impl_g ::garmentcode::__private::Params for #ident #ty_g #where_g {
+                    fn describe(_: &str, _: &mut ::std::vec::Vec<::garmentcode::__private::ParamSpec>) { unimplemented!() }
+                    fn defaults() -> Self { unimplemented!() }
+                    fn get_value(&self, _: &[&str]) -> ::std::option::Option<::garmentcode::__private::Value> { unimplemented!() }
+                    fn set_value(&mut self, _: &[&str], _: &::garmentcode::__private::Value) -> ::std::result::Result<(), ::std::string::String> { unimplemented!() }
+                }
+            };
+        }
+    };
+    let p = quote!(::garmentcode::__private);
+    let mut describe = Vec::new();
+    let mut defaults = Vec::new();
+    let mut gets = Vec::new();
+    let mut sets = Vec::new();
+    for field in &model.fields {
+        match field {
+            Field::Group(g) => {
+                let (fid, ty, name) = (&g.ident, &g.ty, &g.name);
+                describe.push(quote_spanned! {ty.span()=>
+                    <#ty as #p::Params>::describe(&#p::join_path(prefix, #name), out);
+                });
+                defaults.push(quote_spanned! {ty.span()=> #fid: <#ty as #p::Params>::defaults() });
+                gets.push(quote! { [#name, rest @ ..] => #p::Params::get_value(&self.#fid, rest) });
+                sets.push(quote! { [#name, rest @ ..] => #p::Params::set_value(&mut self.#fid, rest, v) });
+            }
+            Field::Leaf(l) => {
+                let (fid, ty, name) = (&l.ident, &l.ty, &l.name);
+                let description = &l.description;
+                let default = default_expr(l.leaf_type, ty, &l.default);
+                let prob = match l.prob {
+                    Some(x) => quote!(::std::option::Option::Some(#x)),
+                    None => quote!(::std::option::Option::None),
+                };
+                let (kind, range) = match (&l.range, &l.options) {
+                    (Some((lo, hi)), _) => (quote!(<#ty as #p::ParamValue>::KIND), quote!(#p::Range::Numeric { lo: #lo, hi: #hi })),
+                    (None, Some(opts)) => {
+                        let vals: Vec<TokenStream> = opts
+                            .iter()
+                            .map(|o| {
+                                if l.leaf_type == LeafType::Int {
+                                    let i = *o as i64;
+                                    quote!(#p::Value::Int(#i))
+                                } else {
+                                    quote!(#p::Value::Float(#o))
+                                }
+                            })
+                            .collect();
+                        (quote!(#p::Kind::Select), quote!(#p::Range::Options(::std::vec![#(#vals),*])))
+                    }
+                    (None, None) => (quote!(<#ty as #p::ParamValue>::KIND), quote!(#p::Range::Options(<#ty as #p::ParamValue>::options()))),
+                };
+                let span = ty.span();
+                describe.push(quote_spanned! {span=>
+                    out.push(#p::ParamSpec {
+                        path: #p::join_path(prefix, #name),
+                        kind: #kind,
+                        range: #range,
+                        default: <#ty as #p::ParamValue>::to_value(&(#default)),
+                        default_prob: #prob,
+                        description: ::std::string::String::from(#description),
+                    });
+                });
+                defaults.push(quote! { #fid: #default });
+                gets.push(quote! { [#name] => ::std::option::Option::Some(<#ty as #p::ParamValue>::to_value(&self.#fid)) });
+                sets.push(quote! {
+                    [#name] => {
+                        self.#fid = <#ty as #p::ParamValue>::from_value(v)
+                            .ok_or_else(|| ::std::format!("value {} does not fit this parameter", v))?;
+                        ::std::result::Result::Ok(())
+                    }
+                });
+                let _ = l.name_span;
+            }
+        }
+    }
+    quote! {
+        impl #impl_g #p::Params for #ident #ty_g #where_g {
+            fn describe(prefix: &str, out: &mut ::std::vec::Vec<#p::ParamSpec>) {
+                #(#describe)*
+            }
+            fn defaults() -> Self {
+                #ident { #(#defaults),* }
+            }
+            fn get_value(&self, path: &[&str]) -> ::std::option::Option<#p::Value> {
+                match path {
+                    #(#gets,)*
+                    _ => ::std::option::Option::None,
+                }
+            }
+            fn set_value(&mut self, path: &[&str], v: &#p::Value) -> ::std::result::Result<(), ::std::string::String> {
+                match path {
+                    #(#sets,)*
+                    _ => ::std::result::Result::Err(::std::format!("unknown parameter {}", path.join("."))),
+                }
+            }
+        }
+    }
+}
+
+/// The default as a Rust expression of the field's type, spanned at the author's
+/// tokens (an unknown enum variant is reported there).
+fn default_expr(leaf: LeafType, ty: &Type, e: &Expr) -> TokenStream {
+    let span = e.span();
+    match leaf {
+        LeafType::Float => {
+            let v = number(e).map(|(v, _)| v).unwrap_or(0.0);
+            quote_spanned!(span=> #v)
+        }
+        LeafType::Int => {
+            let v = number(e).map(|(v, _)| v as i64).unwrap_or(0);
+            quote_spanned!(span=> #v)
+        }
+        LeafType::Bool => quote_spanned!(span=> #e),
+        LeafType::Other => variant(ty, e),
+        LeafType::OptionalOther => {
+            if let Expr::Path(p) = e
+                && p.path.is_ident("None")
+            {
+                return quote_spanned!(span=> ::std::option::Option::None);
+            }
+            let inner = option_inner(ty).expect("classified as Option<T>");
+            let v = variant(inner, e);
+            quote_spanned!(span=> ::std::option::Option::Some(#v))
+        }
+    }
+}
+
+/// `Variant` → `Type::Variant`; a path is used as written.
+fn variant(ty: &Type, e: &Expr) -> TokenStream {
+    let span = e.span();
+    if let Expr::Path(p) = e
+        && let Some(id) = p.path.get_ident()
+    {
+        return quote_spanned!(span=> <#ty>::#id);
+    }
+    quote_spanned!(span=> #e)
+}
+
+fn option_inner(ty: &Type) -> Option<&Type> {
+    let Type::Path(p) = ty else { return None };
+    let seg = p.path.segments.last()?;
+    let PathArguments::AngleBracketed(args) = &seg.arguments else { return None };
+    match args.args.first()? {
+        GenericArgument::Type(t) => Some(t),
+        _ => None,
+    }
+}

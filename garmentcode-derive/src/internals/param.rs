@@ -1,0 +1,340 @@
+//! The model of a `#[derive(Params)]` struct and of a `#[derive(Choice)]` enum.
+
+use super::{Errors, doc_comment, number};
+use proc_macro2::Span;
+use syn::spanned::Spanned;
+use syn::{Data, DeriveInput, Expr, Fields, GenericArgument, Ident, LitStr, PathArguments, RangeLimits, Type};
+
+/// What Rust type a leaf parameter has.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum LeafType {
+    /// `f64`
+    Float,
+    /// `i64`
+    Int,
+    /// `bool`
+    Bool,
+    /// An enum deriving `Choice` (or another `ParamValue` type).
+    Other,
+    /// `Option<Enum>`
+    OptionalOther,
+}
+
+/// A leaf parameter.
+pub struct Leaf {
+    /// The field.
+    pub ident: Ident,
+    /// The field's type.
+    pub ty: Type,
+    /// Rust type class.
+    pub leaf_type: LeafType,
+    /// Name in design files.
+    pub name: String,
+    /// Span for errors about the name.
+    pub name_span: Span,
+    /// `range = lo..=hi`.
+    pub range: Option<(f64, f64)>,
+    /// `options = [..]` (numbers).
+    pub options: Option<Vec<f64>>,
+    /// `default = ..`.
+    pub default: Expr,
+    /// `prob = ..`.
+    pub prob: Option<f64>,
+    /// Doc comment.
+    pub description: String,
+}
+
+/// A nested group.
+pub struct Group {
+    /// The field.
+    pub ident: Ident,
+    /// Group type.
+    pub ty: Type,
+    /// Name in design files.
+    pub name: String,
+}
+
+/// A field of a parameter struct.
+pub enum Field {
+    /// A parameter.
+    Leaf(Box<Leaf>),
+    /// A nested group.
+    Group(Group),
+}
+
+/// A parsed `#[derive(Params)]` struct.
+pub struct ParamStruct {
+    /// The fields in order.
+    pub fields: Vec<Field>,
+}
+
+#[derive(Default)]
+struct RawAttr {
+    range: Option<(Expr, Span)>,
+    options: Option<(Vec<Expr>, Span)>,
+    default: Option<Expr>,
+    prob: Option<(Expr, Span)>,
+    rename: Option<LitStr>,
+    seen: bool,
+}
+
+fn parse_param_attr(attrs: &[syn::Attribute], errors: &mut Errors) -> RawAttr {
+    let mut raw = RawAttr::default();
+    for attr in attrs.iter().filter(|a| a.path().is_ident("param")) {
+        raw.seen = true;
+        let res = attr.parse_nested_meta(|meta| {
+            let key = meta.path.get_ident().map(|i| i.to_string()).unwrap_or_default();
+            let span = meta.path.span();
+            match key.as_str() {
+                "range" => raw.range = Some((meta.value()?.parse()?, span)),
+                "default" => raw.default = Some(meta.value()?.parse()?),
+                "prob" => raw.prob = Some((meta.value()?.parse()?, span)),
+                "rename" => raw.rename = Some(meta.value()?.parse()?),
+                "options" => {
+                    let e: Expr = meta.value()?.parse()?;
+                    match e {
+                        Expr::Array(arr) => raw.options = Some((arr.elems.into_iter().collect(), span)),
+                        other => return Err(syn::Error::new(other.span(), "options must be a list: `options = [a, b, c]`")),
+                    }
+                }
+                _ => {
+                    return Err(meta.error(format!(
+                        "unknown parameter attribute `{key}` (expected range, options, default, prob or rename)"
+                    )));
+                }
+            }
+            Ok(())
+        });
+        if let Err(e) = res {
+            errors.push(e);
+        }
+    }
+    raw
+}
+
+/// Classify a field type, or explain why it cannot be a parameter.
+fn classify(ty: &Type) -> Result<LeafType, String> {
+    let Type::Path(p) = ty else {
+        return Err(format!(
+            "type `{}` cannot be a parameter: use f64, i64, bool, an enum deriving Choice, Option<enum> or a group deriving Params",
+            quote::quote!(#ty)
+        ));
+    };
+    let seg = p.path.segments.last().expect("a path has segments");
+    let name = seg.ident.to_string();
+    match name.as_str() {
+        "f64" => Ok(LeafType::Float),
+        "i64" => Ok(LeafType::Int),
+        "bool" => Ok(LeafType::Bool),
+        "Option" => {
+            if let PathArguments::AngleBracketed(args) = &seg.arguments
+                && let Some(GenericArgument::Type(inner)) = args.args.first()
+                && matches!(classify(inner), Ok(LeafType::Other))
+            {
+                return Ok(LeafType::OptionalOther);
+            }
+            Err("an optional parameter must be `Option<E>` with an enum `E` deriving Choice".into())
+        }
+        "f32" | "i32" | "i8" | "i16" | "u8" | "u16" | "u32" | "u64" | "usize" | "isize" | "i128" | "u128" => {
+            Err(format!("use `f64` or `i64` for numeric parameters, not `{name}`"))
+        }
+        "String" | "str" | "Vec" | "HashMap" | "BTreeMap" | "Box" | "Rc" | "Arc" | "char" => Err(format!(
+            "type `{name}` cannot be a parameter: use f64, i64, bool, an enum deriving Choice, Option<enum> or a group deriving Params"
+        )),
+        _ => Ok(LeafType::Other),
+    }
+}
+
+/// Parse and validate a parameter struct.
+pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
+    let mut errors = Errors::default();
+    let Data::Struct(data) = &input.data else {
+        return Err(syn::Error::new(input.ident.span(), "#[derive(Params)] expects a struct with named fields; use #[derive(Choice)] for enums"));
+    };
+    let Fields::Named(named) = &data.fields else {
+        return Err(syn::Error::new(input.ident.span(), "#[derive(Params)] expects a struct with named fields"));
+    };
+    let mut fields = Vec::new();
+    let mut names: Vec<(String, Span)> = Vec::new();
+    for f in &named.named {
+        let ident = f.ident.clone().expect("named field");
+        let raw = parse_param_attr(&f.attrs, &mut errors);
+        let (name, name_span) = match &raw.rename {
+            Some(l) => (l.value(), l.span()),
+            None => (ident.to_string(), ident.span()),
+        };
+        if name.is_empty() || name.contains('.') {
+            errors.at(name_span, format!("parameter name `{name}` must be non-empty and contain no `.`"));
+        }
+        if let Some((_, first)) = names.iter().find(|(n, _)| *n == name) {
+            let _ = first;
+            errors.at(name_span, format!("duplicate parameter name `{name}` (after renaming)"));
+        }
+        names.push((name.clone(), name_span));
+
+        let is_leaf = raw.default.is_some() || raw.range.is_some() || raw.options.is_some() || raw.prob.is_some();
+        if !is_leaf {
+            fields.push(Field::Group(Group { ident, ty: f.ty.clone(), name }));
+            continue;
+        }
+        let leaf_type = match classify(&f.ty) {
+            Ok(t) => t,
+            Err(msg) => {
+                errors.at(f.ty.span(), msg);
+                continue;
+            }
+        };
+        let Some(default) = raw.default.clone() else {
+            errors.at(ident.span(), "a parameter needs a `default = ..`");
+            continue;
+        };
+        let range = raw.range.as_ref().and_then(|(e, span)| parse_range(e, *span, &mut errors));
+        let options = raw.options.as_ref().map(|(items, _)| {
+            items
+                .iter()
+                .filter_map(|it| match number(it) {
+                    Some((v, _)) => Some(v),
+                    None => {
+                        errors.at(it.span(), "options must be numbers (use an enum deriving Choice for named options)");
+                        None
+                    }
+                })
+                .collect::<Vec<f64>>()
+        });
+        let prob = raw.prob.as_ref().and_then(|(e, span)| match number(e) {
+            Some((p, _)) if (0.0..=1.0).contains(&p) => Some(p),
+            Some((p, _)) => {
+                errors.at(e.span(), format!("probability {p} is outside [0, 1]"));
+                None
+            }
+            None => {
+                errors.at(*span, "prob must be a number in [0, 1]");
+                None
+            }
+        });
+        // Type-specific rules.
+        match leaf_type {
+            LeafType::Float | LeafType::Int => {
+                if raw.range.is_none() && raw.options.is_none() {
+                    errors.at(ident.span(), "a numeric parameter needs `range = lo..=hi` or `options = [..]`");
+                }
+                if raw.range.is_some() && raw.options.is_some() {
+                    errors.at(ident.span(), "give either `range` or `options`, not both");
+                }
+                match number(&default) {
+                    None => errors.at(default.span(), "the default of a numeric parameter must be a number"),
+                    Some((d, is_int)) => {
+                        if leaf_type == LeafType::Int && !is_int {
+                            errors.at(default.span(), "the default of an i64 parameter must be an integer");
+                        }
+                        if let Some((lo, hi)) = range
+                            && (d < lo || d > hi)
+                        {
+                            errors.at(default.span(), format!("default {d} is outside the range {lo}..={hi}"));
+                        }
+                        if let Some(opts) = &options
+                            && !opts.contains(&d)
+                        {
+                            let list: Vec<String> = opts.iter().map(|o| o.to_string()).collect();
+                            errors.at(default.span(), format!("default {d} is not one of the options [{}]", list.join(", ")));
+                        }
+                    }
+                }
+                if let Some(opts) = &options {
+                    if leaf_type == LeafType::Int && opts.iter().any(|o| o.fract() != 0.0) {
+                        errors.at(raw.options.as_ref().expect("options").1, "options of an i64 parameter must be integers");
+                    }
+                    if opts.is_empty() {
+                        errors.at(raw.options.as_ref().expect("options").1, "options must not be empty");
+                    }
+                }
+            }
+            LeafType::Bool | LeafType::Other | LeafType::OptionalOther => {
+                if let Some((_, span)) = &raw.range {
+                    errors.at(*span, "`range` applies to f64 and i64 parameters only");
+                }
+                if let Some((_, span)) = &raw.options {
+                    errors.at(*span, "`options` applies to f64 and i64 parameters; the options of an enum are its variants");
+                }
+                if leaf_type == LeafType::Bool && !matches!(&default, Expr::Lit(syn::ExprLit { lit: syn::Lit::Bool(_), .. })) {
+                    errors.at(default.span(), "the default of a bool parameter must be `true` or `false`");
+                }
+            }
+        }
+        fields.push(Field::Leaf(Box::new(Leaf {
+            ident,
+            ty: f.ty.clone(),
+            leaf_type,
+            name,
+            name_span,
+            range,
+            options,
+            default,
+            prob,
+            description: doc_comment(&f.attrs),
+        })));
+    }
+    errors.finish()?;
+    Ok(ParamStruct { fields })
+}
+
+fn parse_range(e: &Expr, span: Span, errors: &mut Errors) -> Option<(f64, f64)> {
+    let Expr::Range(r) = e else {
+        errors.at(span, "range must be written `lo..=hi`");
+        return None;
+    };
+    if !matches!(r.limits, RangeLimits::Closed(_)) {
+        errors.at(e.span(), "range must include its upper bound: write `lo..=hi`");
+        return None;
+    }
+    let (Some(start), Some(end)) = (&r.start, &r.end) else {
+        errors.at(e.span(), "range needs both bounds: `lo..=hi`");
+        return None;
+    };
+    let (Some((lo, _)), Some((hi, _))) = (number(start), number(end)) else {
+        errors.at(e.span(), "range bounds must be number literals");
+        return None;
+    };
+    if lo >= hi {
+        errors.at(e.span(), format!("empty or reversed range {lo}..={hi}"));
+        return None;
+    }
+    Some((lo, hi))
+}
+
+/// A parsed `#[derive(Choice)]` enum: variant idents and option names.
+pub struct ChoiceEnum {
+    /// `(variant, name in design files)`.
+    pub variants: Vec<(Ident, String)>,
+}
+
+/// Parse and validate a choice enum.
+pub fn parse_enum(input: &DeriveInput) -> Result<ChoiceEnum, syn::Error> {
+    let mut errors = Errors::default();
+    let Data::Enum(data) = &input.data else {
+        return Err(syn::Error::new(input.ident.span(), "#[derive(Choice)] expects an enum of unit variants"));
+    };
+    if data.variants.is_empty() {
+        return Err(syn::Error::new(input.ident.span(), "a choice needs at least one variant"));
+    }
+    let mut variants: Vec<(Ident, String)> = Vec::new();
+    for v in &data.variants {
+        if !matches!(v.fields, Fields::Unit) {
+            errors.at(v.ident.span(), "choice variants cannot carry data");
+        }
+        let raw = parse_param_attr(&v.attrs, &mut errors);
+        if raw.range.is_some() || raw.options.is_some() || raw.default.is_some() || raw.prob.is_some() {
+            errors.at(v.ident.span(), "only `rename` applies to choice variants");
+        }
+        let (name, span) = match &raw.rename {
+            Some(l) => (l.value(), l.span()),
+            None => (v.ident.to_string(), v.ident.span()),
+        };
+        if variants.iter().any(|(_, n)| *n == name) {
+            errors.at(span, format!("duplicate option name `{name}` (after renaming)"));
+        }
+        variants.push((v.ident.clone(), name));
+    }
+    errors.finish()?;
+    Ok(ChoiceEnum { variants })
+}

@@ -1,0 +1,158 @@
+//! Random designs with the reference's sampling semantics on a named generator.
+//!
+//! Every parameter is sampled independently, in document order. `default_prob` is
+//! the probability of keeping the default; when the default is not kept and a
+//! probability is given, the default is excluded (removed from the options, re-drawn
+//! for numbers). Without a probability the parameter is always drawn afresh.
+//!
+//! The generator is ChaCha8 (`rand_chacha`), seeded from `(seed, index)` so that
+//! sample `index` of seed `seed` is the same on every machine and can be
+//! regenerated alone.
+
+use super::{DesignSpace, Kind, Params, Range, Value};
+use rand_chacha::ChaCha8Rng;
+use rand_chacha::rand_core::{RngCore, SeedableRng};
+
+/// The generator of sample `index` for `seed`: ChaCha8 seeded with `seed`, on
+/// stream `index`.
+pub fn sample_rng(seed: u64, index: u64) -> ChaCha8Rng {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    rng.set_stream(index);
+    rng
+}
+
+/// Draws random designs from a design space.
+#[derive(Clone, Debug)]
+pub struct Sampler {
+    space: DesignSpace,
+}
+
+impl Sampler {
+    /// A sampler over `space` (which should have no [`DesignSpace::problems`]).
+    pub fn new(space: DesignSpace) -> Sampler {
+        Sampler { space }
+    }
+
+    /// The design space.
+    pub fn space(&self) -> &DesignSpace {
+        &self.space
+    }
+
+    /// One random design as `(path, value)` pairs in document order.
+    pub fn sample_values(&self, rng: &mut impl RngCore) -> Vec<(String, Value)> {
+        self.space.params().iter().map(|p| (p.path.clone(), sample_one(p, rng))).collect()
+    }
+
+    /// One random design as a typed parameter tree.
+    pub fn sample<D: Params>(&self, rng: &mut impl RngCore) -> D {
+        let values = self.sample_values(rng);
+        super::io::from_values(&values, "<sampled>").expect("sampled values fit their own space")
+    }
+}
+
+fn sample_one(p: &super::ParamSpec, rng: &mut impl RngCore) -> Value {
+    let keep = p.default_prob.is_some_and(|prob| unit(rng) < prob);
+    if keep {
+        return p.default.clone();
+    }
+    let exclude = p.default_prob.is_some();
+    match (&p.kind, &p.range) {
+        (Kind::Int, Range::Numeric { lo, hi }) => {
+            let (lo, hi) = (*lo as i64, *hi as i64);
+            loop {
+                let v = lo + below(rng, (hi - lo + 1) as u64) as i64;
+                if !(exclude && Value::Int(v).loosely_eq(&p.default)) {
+                    return Value::Int(v);
+                }
+            }
+        }
+        (Kind::Float, Range::Numeric { lo, hi }) => {
+            let def = p.default.as_f64().unwrap_or(f64::NAN);
+            loop {
+                let v = lo + (hi - lo) * unit(rng);
+                if !(exclude && (v - def).abs() < 1e-4) {
+                    return Value::Float(v);
+                }
+            }
+        }
+        (_, Range::Options(opts)) => {
+            let mut opts = opts.clone();
+            if p.kind == Kind::SelectNull && !opts.contains(&Value::Null) {
+                opts.push(Value::Null);
+            }
+            if exclude && let Some(i) = opts.iter().position(|o| o.loosely_eq(&p.default)) {
+                opts.remove(i);
+            }
+            if opts.is_empty() {
+                return p.default.clone();
+            }
+            opts[below(rng, opts.len() as u64) as usize].clone()
+        }
+        _ => p.default.clone(),
+    }
+}
+
+/// Uniform real in [0, 1) with 53 random bits.
+fn unit(rng: &mut impl RngCore) -> f64 {
+    (rng.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+}
+
+/// Uniform integer in [0, n) without modulo bias.
+fn below(rng: &mut impl RngCore, n: u64) -> u64 {
+    let zone = (u64::MAX / n) * n;
+    loop {
+        let x = rng.next_u64();
+        if x < zone {
+            return x % n;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::params::ParamSpec;
+
+    fn spec(kind: Kind, range: Range, default: Value, prob: Option<f64>) -> ParamSpec {
+        ParamSpec { path: "x".into(), kind, range, default, default_prob: prob, description: String::new() }
+    }
+
+    #[test]
+    fn default_prob_is_the_probability_of_the_default() {
+        let p = spec(Kind::Int, Range::Numeric { lo: 1.0, hi: 5.0 }, Value::Int(3), Some(0.3));
+        let mut rng = sample_rng(7, 0);
+        let n = 20000;
+        let hits = (0..n).filter(|_| sample_one(&p, &mut rng) == Value::Int(3)).count();
+        let rate = hits as f64 / n as f64;
+        assert!((rate - 0.3).abs() < 0.02, "{rate}");
+    }
+
+    #[test]
+    fn integer_bounds_are_inclusive() {
+        let p = spec(Kind::Int, Range::Numeric { lo: 4.0, hi: 6.0 }, Value::Int(4), None);
+        let mut rng = sample_rng(1, 2);
+        let mut seen = [false; 3];
+        for _ in 0..200 {
+            let Value::Int(v) = sample_one(&p, &mut rng) else { panic!() };
+            seen[(v - 4) as usize] = true;
+        }
+        assert_eq!(seen, [true; 3]);
+    }
+
+    #[test]
+    fn select_null_includes_null() {
+        let p = spec(Kind::SelectNull, Range::Options(vec![Value::Str("A".into())]), Value::Str("A".into()), Some(0.0));
+        let mut rng = sample_rng(3, 0);
+        for _ in 0..20 {
+            assert_eq!(sample_one(&p, &mut rng), Value::Null, "the default is excluded, null remains");
+        }
+    }
+
+    #[test]
+    fn streams_are_reproducible_and_independent() {
+        let a: Vec<u64> = (0..4).map(|_| sample_rng(5, 9).next_u64()).collect();
+        assert!(a.windows(2).all(|w| w[0] == w[1]));
+        assert_ne!(sample_rng(5, 9).next_u64(), sample_rng(5, 10).next_u64());
+        assert_ne!(sample_rng(5, 9).next_u64(), sample_rng(6, 9).next_u64());
+    }
+}
