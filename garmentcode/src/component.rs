@@ -83,6 +83,18 @@ pub trait Slot<S> {
     fn slot(&self) -> InterfaceId;
 }
 
+impl<S, T: Slot<S> + ?Sized> Slot<S> for Box<T> {
+    fn slot(&self) -> InterfaceId {
+        (**self).slot()
+    }
+}
+
+impl<S, T: Slot<S> + ?Sized> Slot<S> for &T {
+    fn slot(&self) -> InterfaceId {
+        (**self).slot()
+    }
+}
+
 /// `x.iface::<Top>()` instead of `Slot::<Top>::slot(&x)`.
 pub trait SlotExt {
     /// The interface filling slot `S`.
@@ -130,7 +142,7 @@ impl Node<'_> {
     /// bounding box).
     pub fn pivot_3d(&self, a: &Arena) -> Vec3 {
         match self {
-            Node::Panel(p) => p.translation(a),
+            Node::Panel(p) => PanelId::translation(*p, a),
             Node::Component(_) => {
                 let (lo, hi) = self.bbox3d(a);
                 Vec3::new((lo.x + hi.x) / 2.0, hi.y, (lo.z + hi.z) / 2.0)
@@ -141,7 +153,7 @@ impl Node<'_> {
     /// 3D bounding box of the linearised outlines (infinite and inverted when empty).
     pub fn bbox3d(&self, a: &Arena) -> (Vec3, Vec3) {
         match self {
-            Node::Panel(p) => p.bbox3d(a),
+            Node::Panel(p) => PanelId::bbox3d(*p, a),
             Node::Component(c) => {
                 let mut lo = Vec3::splat(f64::INFINITY);
                 let mut hi = Vec3::splat(f64::NEG_INFINITY);
@@ -159,7 +171,7 @@ impl Node<'_> {
     pub fn translate_by(&self, a: &mut Arena, d: Vec3) {
         match self {
             Node::Panel(p) => {
-                p.translate_by(a, d);
+                PanelId::translate_by(*p, a, d);
             }
             Node::Component(c) => c.for_each_part(&mut |p| p.node().translate_by(a, d)),
         }
@@ -169,7 +181,7 @@ impl Node<'_> {
     pub fn translate_to(&self, a: &mut Arena, t: Vec3) {
         match self {
             Node::Panel(p) => {
-                p.translate_to(a, t);
+                PanelId::translate_to(*p, a, t);
             }
             Node::Component(c) => {
                 let pivot = self.pivot_3d(a);
@@ -186,7 +198,7 @@ impl Node<'_> {
     pub fn rotate_by(&self, a: &mut Arena, q: Rotation) {
         match self {
             Node::Panel(p) => {
-                p.rotate_by(a, q);
+                PanelId::rotate_by(*p, a, q);
             }
             Node::Component(c) => {
                 let pivot = self.pivot_3d(a);
@@ -205,7 +217,7 @@ impl Node<'_> {
     pub fn mirror(&self, a: &mut Arena) {
         match self {
             Node::Panel(p) => {
-                p.mirror(a);
+                PanelId::mirror(*p, a);
             }
             Node::Component(c) => c.for_each_part(&mut |p| p.node().mirror(a)),
         }
@@ -214,7 +226,7 @@ impl Node<'_> {
     /// Length: a panel's length, or the component's own notion of length.
     pub fn length(&self, a: &Arena) -> f64 {
         match self {
-            Node::Panel(p) => p.length(a),
+            Node::Panel(p) => PanelId::length(*p, a),
             Node::Component(c) => c.length(a),
         }
     }
@@ -222,7 +234,7 @@ impl Node<'_> {
     /// Set the label of every panel (with `overwrite = false`, only empty labels).
     pub fn set_panel_label(&self, a: &mut Arena, label: &str, overwrite: bool) {
         match self {
-            Node::Panel(p) => p.set_label(a, label, overwrite),
+            Node::Panel(p) => PanelId::set_label(*p, a, label, overwrite),
             Node::Component(c) => c.for_each_part(&mut |p| p.node().set_panel_label(a, label, overwrite)),
         }
     }
@@ -230,7 +242,7 @@ impl Node<'_> {
     /// Whether any panel's outline crosses itself.
     pub fn is_self_intersecting(&self, a: &Arena) -> bool {
         match self {
-            Node::Panel(p) => p.is_self_intersecting(a),
+            Node::Panel(p) => PanelId::is_self_intersecting(*p, a),
             Node::Component(c) => {
                 let mut any = false;
                 c.for_each_part(&mut |p| any = any || p.node().is_self_intersecting(a));

@@ -206,6 +206,13 @@ impl InterfaceId {
         self
     }
 
+    /// Set one edge's "treat as reversed" flag (stitch matching measures its split
+    /// fractions from the other end).
+    pub fn set_flip(self, a: &mut Arena, edge: usize, flag: bool) -> Self {
+        a.iface_mut(self).flipping[edge] = flag;
+        self
+    }
+
     /// Mark every edge as sewn right side to wrong side.
     pub fn set_right_wrong(self, a: &mut Arena, flag: bool) -> Self {
         let d = a.iface_mut(self);

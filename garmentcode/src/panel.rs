@@ -152,6 +152,12 @@ impl PanelId {
         d.rotation.apply(Vec3::new(p.x, p.y, 0.0)) + d.translation
     }
 
+    /// Set the translation without re-orienting the loop (the reference assigns it
+    /// directly in a few places).
+    pub fn set_translation(self, a: &mut Arena, t: Vec3) {
+        a.pd_mut(self).translation = t;
+    }
+
     /// Move by `delta` (then re-orient the loop).
     pub fn translate_by(self, a: &mut Arena, delta: Vec3) -> Self {
         let d = a.pd_mut(self);

@@ -71,7 +71,8 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     }
     let parts = &model.parts;
     let name = match &model.name {
-        Some(n) => quote!(::std::string::String::from(#n)),
+        Some(syn::Expr::Lit(syn::ExprLit { lit: syn::Lit::Str(n), .. })) => quote!(::std::string::String::from(#n)),
+        Some(e) => quote!(::std::string::ToString::to_string(&(#e))),
         None => {
             let s = ident.to_string();
             quote!(::std::string::String::from(#s))

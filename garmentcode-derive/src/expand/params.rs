@@ -66,6 +66,14 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
                             .collect();
                         (quote!(#p::Kind::Select), quote!(#p::Range::Options(::std::vec![#(#vals),*])))
                     }
+                    (None, None) if !l.null_option => (
+                        quote!(<#ty as #p::ParamValue>::KIND),
+                        quote!(#p::Range::Options({
+                            let mut o = <#ty as #p::ParamValue>::options();
+                            o.retain(|v| *v != #p::Value::Null);
+                            o
+                        })),
+                    ),
                     (None, None) => (quote!(<#ty as #p::ParamValue>::KIND), quote!(#p::Range::Options(<#ty as #p::ParamValue>::options()))),
                 };
                 let span = ty.span();

@@ -49,8 +49,8 @@ pub struct ComponentStruct {
     pub interfaces: Vec<InterfaceField>,
     /// `#[stitches]` field.
     pub stitches: Option<Ident>,
-    /// `#[component(name = "..")]`.
-    pub name: Option<LitStr>,
+    /// `#[component(name = "..")]` or `#[component(name = self.field)]`.
+    pub name: Option<syn::Expr>,
     /// `#[component(length = path)]`.
     pub length: Option<Path>,
 }
@@ -79,7 +79,7 @@ pub fn parse(input: &DeriveInput) -> Result<ComponentStruct, syn::Error> {
             } else if meta.path.is_ident("length") {
                 out.length = Some(meta.value()?.parse()?);
             } else {
-                return Err(meta.error("unknown component attribute (expected `name = \"..\"` or `length = path`)"));
+                return Err(meta.error("unknown component attribute (expected `name = \"..\"`, `name = self.field` or `length = path`)"));
             }
             Ok(())
         });
@@ -115,7 +115,7 @@ pub fn parse(input: &DeriveInput) -> Result<ComponentStruct, syn::Error> {
                 out.stitches = Some(ident.clone());
             } else if p.is_ident("interface") {
                 roles.push(("interface", attr.span()));
-                let mut name = ident.to_string();
+                let mut name = syn::ext::IdentExt::unraw(&ident).to_string();
                 let mut slot: Option<Path> = None;
                 if !matches!(attr.meta, syn::Meta::Path(_)) {
                     let res = attr.parse_nested_meta(|meta| {

@@ -2,6 +2,7 @@
 
 use super::{Errors, doc_comment, number};
 use proc_macro2::Span;
+use syn::ext::IdentExt;
 use syn::spanned::Spanned;
 use syn::{Data, DeriveInput, Expr, Fields, GenericArgument, Ident, LitStr, PathArguments, RangeLimits, Type};
 
@@ -42,6 +43,9 @@ pub struct Leaf {
     pub prob: Option<f64>,
     /// Doc comment.
     pub description: String,
+    /// `null_option = false`: leave null out of the written options of an
+    /// optional parameter (it stays a valid value, as in the reference).
+    pub null_option: bool,
 }
 
 /// A nested group.
@@ -75,6 +79,7 @@ struct RawAttr {
     default: Option<Expr>,
     prob: Option<(Expr, Span)>,
     rename: Option<LitStr>,
+    null_option: Option<(bool, Span)>,
     seen: bool,
 }
 
@@ -90,6 +95,10 @@ fn parse_param_attr(attrs: &[syn::Attribute], errors: &mut Errors) -> RawAttr {
                 "default" => raw.default = Some(meta.value()?.parse()?),
                 "prob" => raw.prob = Some((meta.value()?.parse()?, span)),
                 "rename" => raw.rename = Some(meta.value()?.parse()?),
+                "null_option" => {
+                    let b: syn::LitBool = meta.value()?.parse()?;
+                    raw.null_option = Some((b.value, span));
+                }
                 "options" => {
                     let e: Expr = meta.value()?.parse()?;
                     match e {
@@ -99,7 +108,7 @@ fn parse_param_attr(attrs: &[syn::Attribute], errors: &mut Errors) -> RawAttr {
                 }
                 _ => {
                     return Err(meta.error(format!(
-                        "unknown parameter attribute `{key}` (expected range, options, default, prob or rename)"
+                        "unknown parameter attribute `{key}` (expected range, options, default, prob, rename or null_option)"
                     )));
                 }
             }
@@ -161,7 +170,7 @@ pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
         let raw = parse_param_attr(&f.attrs, &mut errors);
         let (name, name_span) = match &raw.rename {
             Some(l) => (l.value(), l.span()),
-            None => (ident.to_string(), ident.span()),
+            None => (ident.unraw().to_string(), ident.span()),
         };
         if name.is_empty() || name.contains('.') {
             errors.at(name_span, format!("parameter name `{name}` must be non-empty and contain no `.`"));
@@ -212,6 +221,11 @@ pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
                 None
             }
         });
+        if let Some((_, span)) = raw.null_option
+            && leaf_type != LeafType::OptionalOther
+        {
+            errors.at(span, "`null_option` applies to optional (`Option<E>`) parameters only");
+        }
         // Type-specific rules.
         match leaf_type {
             LeafType::Float | LeafType::Int => {
@@ -272,6 +286,7 @@ pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
             default,
             prob,
             description: doc_comment(&f.attrs),
+            null_option: raw.null_option.map(|(b, _)| b).unwrap_or(true),
         })));
     }
     errors.finish()?;
@@ -328,7 +343,7 @@ pub fn parse_enum(input: &DeriveInput) -> Result<ChoiceEnum, syn::Error> {
         }
         let (name, span) = match &raw.rename {
             Some(l) => (l.value(), l.span()),
-            None => (v.ident.to_string(), v.ident.span()),
+            None => (v.ident.unraw().to_string(), v.ident.span()),
         };
         if variants.iter().any(|(_, n)| *n == name) {
             errors.at(span, format!("duplicate option name `{name}` (after renaming)"));

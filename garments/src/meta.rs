@@ -1,0 +1,177 @@
+//! The meta garment: chooses the upper garment, waistband and bottom from the design,
+//! connects them by interfaces and places them; and the reference's validity checks.
+
+use crate::bands::Waistband;
+use crate::bodice::Shirt;
+use crate::circle_skirt::SkirtCircle;
+use crate::design::{BottomKind, Design, GodetBase, LevelsBase, UpperKind, WaistbandKind};
+use crate::godet::GodetSkirt;
+use crate::pants::Pants;
+use crate::skirt_levels::SkirtLevels;
+use crate::skirt_paneled::{PencilSkirt, Skirt2, SkirtManyPanels};
+use garmentcode::slots::{Bottom, Top};
+use garmentcode::{Align, Arena, Body, Component, InterfaceId, Part, PartExt, Result, Slot, SlotExt, StitchRule};
+
+/// An upper garment: exposes a `bottom` to hang a waistband or a bottom garment on.
+pub trait UpperGarment: Part + Slot<Bottom> {}
+impl UpperGarment for Shirt {}
+
+/// A bottom garment: exposes a `top` to sew to the waist and knows its rise.
+pub trait BottomGarment: Part + Slot<Top> {
+    /// How high the garment sits (1 = natural waist).
+    fn rise(&self) -> f64;
+}
+
+impl BottomGarment for SkirtCircle {
+    fn rise(&self) -> f64 {
+        self.rise
+    }
+}
+impl BottomGarment for Skirt2 {
+    fn rise(&self) -> f64 {
+        self.rise
+    }
+}
+impl BottomGarment for PencilSkirt {
+    fn rise(&self) -> f64 {
+        self.rise
+    }
+}
+impl BottomGarment for SkirtManyPanels {
+    fn rise(&self) -> f64 {
+        self.rise
+    }
+}
+impl BottomGarment for GodetSkirt {
+    fn rise(&self) -> f64 {
+        GodetSkirt::rise(self)
+    }
+}
+impl BottomGarment for Pants {
+    fn rise(&self) -> f64 {
+        Pants::rise(self)
+    }
+}
+impl BottomGarment for SkirtLevels {
+    fn rise(&self) -> f64 {
+        self.rise
+    }
+}
+
+/// A complete garment.
+#[derive(Component)]
+#[component(name = "MetaGarment")]
+pub struct MetaGarment {
+    /// Upper garment.
+    #[part]
+    pub upper: Option<Box<dyn UpperGarment>>,
+    /// Waistband.
+    #[part]
+    pub belt: Option<Waistband>,
+    /// Bottom garment.
+    #[part]
+    pub lower: Option<Box<dyn BottomGarment>>,
+    /// Upper to band to bottom.
+    #[stitches]
+    pub stitches: Vec<StitchRule>,
+}
+
+impl MetaGarment {
+    /// Build the garment a design describes on a body.
+    pub fn new(a: &mut Arena, body: &Body, design: &Design) -> Result<MetaGarment> {
+        let meta = &design.meta;
+        let upper: Option<Box<dyn UpperGarment>> = match meta.upper {
+            None => None,
+            Some(kind) => {
+                let s = Shirt::new(a, body, design, kind == UpperKind::FittedShirt)?;
+                s.set_panel_label(a, "body", false);
+                Some(Box::new(s))
+            }
+        };
+        // A fitted top forces the bottom to sit at the natural waist.
+        let forced_rise = if meta.upper == Some(UpperKind::FittedShirt) { Some(1.0) } else { None };
+        let lower: Option<Box<dyn BottomGarment>> = match meta.bottom {
+            None => None,
+            Some(kind) => Some(build_bottom(a, body, design, kind, forced_rise)?),
+        };
+        let mut stitches = Vec::new();
+        let mut prev_bottom: Option<InterfaceId> = upper.as_ref().map(|u| u.iface::<Bottom>());
+        let belt = match meta.wb {
+            None => None,
+            Some(kind) => {
+                let rise = lower.as_ref().map(|l| l.rise()).unwrap_or(1.0);
+                let wb = Waistband::new(a, body, design, rise, kind == WaistbandKind::FittedWB)?;
+                if let Some(prev) = prev_bottom {
+                    wb.place_by_interface(a, wb.top, prev, 5.0, Align::Center);
+                    stitches.push(StitchRule::new(a, prev, wb.top)?);
+                }
+                wb.top.propagate_label(a, "lower_interface");
+                wb.set_panel_label(a, "body", false);
+                prev_bottom = Some(wb.bottom);
+                Some(wb)
+            }
+        };
+        if let Some(lower) = &lower {
+            let top = lower.iface::<Top>();
+            if let Some(prev) = prev_bottom {
+                lower.place_by_interface(a, top, prev, 5.0, Align::Center);
+                stitches.push(StitchRule::new(a, prev, top)?);
+            }
+            if belt.is_none() {
+                top.propagate_label(a, "lower_interface");
+            }
+            lower.set_panel_label(a, "leg", false);
+        }
+        Ok(MetaGarment { upper, belt, lower, stitches })
+    }
+
+    /// Total length: upper + band + bottom, as the reference measures it.
+    pub fn total_length(&self, a: &Arena) -> f64 {
+        Component::length(self, a)
+    }
+}
+
+fn build_bottom(a: &mut Arena, body: &Body, design: &Design, kind: BottomKind, rise: Option<f64>) -> Result<Box<dyn BottomGarment>> {
+    Ok(match kind {
+        BottomKind::SkirtCircle => Box::new(SkirtCircle::new(a, body, design, "", None, rise, true, false)?),
+        BottomKind::AsymmSkirtCircle => Box::new(SkirtCircle::new(a, body, design, "", None, rise, true, true)?),
+        BottomKind::GodetSkirt => Box::new(GodetSkirt::new(a, body, design, rise)?),
+        BottomKind::Pants => Box::new(Pants::new(a, body, design, rise)?),
+        BottomKind::Skirt2 => Box::new(Skirt2::new(a, body, design, "", None, rise, true, true)?),
+        BottomKind::SkirtManyPanels => Box::new(SkirtManyPanels::new(a, body, design, rise)?),
+        BottomKind::PencilSkirt => Box::new(PencilSkirt::new(a, body, design, None, rise, true)?),
+        BottomKind::SkirtLevels => Box::new(SkirtLevels::new(a, body, design, rise)?),
+    })
+}
+
+/// The reference dataset sampler's filter on parameter combinations: `Err` with its
+/// message for empty garments and lone belts, gathered two-panel skirts without a
+/// fitting band, and heavy flared skirts without support.
+pub fn check_param_combinations(d: &Design) -> std::result::Result<(), &'static str> {
+    let meta = &d.meta;
+    if meta.upper.is_some() {
+        return Ok(());
+    }
+    let Some(lower) = meta.bottom else {
+        return Err("ERROR::IncorrectParams::Empty pattern or singular belt");
+    };
+    if matches!(lower, BottomKind::Pants | BottomKind::PencilSkirt) {
+        return Ok(());
+    }
+    let skirt2_based = lower == BottomKind::Skirt2
+        || (lower == BottomKind::GodetSkirt && d.godet_skirt.base == GodetBase::Skirt2)
+        || (lower == BottomKind::SkirtLevels && d.levels_skirt.base == LevelsBase::Skirt2);
+    if skirt2_based && d.skirt.ruffle > 1.0 && (meta.wb.is_none() || d.waistband.waist > 1.0) {
+        return Err("ERROR::IncorrectParams::Skirt2 ruffles + belt");
+    }
+    let flare_family = |k: BottomKind| matches!(k, BottomKind::SkirtCircle | BottomKind::AsymmSkirtCircle | BottomKind::SkirtManyPanels);
+    let levels_on_flare = lower == BottomKind::SkirtLevels
+        && matches!(d.levels_skirt.base, LevelsBase::SkirtCircle | LevelsBase::AsymmSkirtCircle);
+    if (flare_family(lower) || levels_on_flare) && (meta.wb.is_none() || d.waistband.waist > 1.0 || d.waistband.width <= 0.25) {
+        let length = if lower == BottomKind::SkirtLevels { d.levels_skirt.length } else { d.flare_skirt.length };
+        if length > 0.5 || d.flare_skirt.suns > 0.75 {
+            return Err("ERROR::IncorrectParams::Flare skirts + belt");
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,117 @@
+//! Tiered skirt: a base skirt with further skirts sewn below it, each gathered into
+//! the hem of the one above.
+
+use crate::circle_skirt::SkirtCircle;
+use crate::design::{Design, LevelKind, LevelsBase};
+use crate::skirt_paneled::{PencilSkirt, Skirt2};
+use garmentcode::{Align, Arena, Body, Component, InterfaceId, Node, Part, PartExt, Result, Rotation, StitchRule};
+
+/// A skirt that can carry another skirt below it.
+#[derive(Clone, Debug)]
+pub enum Stackable {
+    /// Two-panel skirt.
+    Skirt2(Skirt2),
+    /// Pencil skirt.
+    Pencil(PencilSkirt),
+    /// Circle skirt.
+    Circle(SkirtCircle),
+}
+
+impl Part for Stackable {
+    fn node(&self) -> Node<'_> {
+        match self {
+            Stackable::Skirt2(s) => s.node(),
+            Stackable::Pencil(s) => s.node(),
+            Stackable::Circle(s) => s.node(),
+        }
+    }
+}
+
+impl Stackable {
+    /// Waist.
+    pub fn top(&self) -> InterfaceId {
+        match self {
+            Stackable::Skirt2(s) => s.top,
+            Stackable::Pencil(s) => s.top,
+            Stackable::Circle(s) => s.top,
+        }
+    }
+    /// Hem.
+    pub fn bottom(&self) -> InterfaceId {
+        match self {
+            Stackable::Skirt2(s) => s.bottom,
+            Stackable::Pencil(s) => s.bottom,
+            Stackable::Circle(s) => s.bottom,
+        }
+    }
+    /// Back hem.
+    pub fn bottom_b(&self) -> InterfaceId {
+        match self {
+            Stackable::Skirt2(s) => s.bottom_b,
+            Stackable::Pencil(s) => s.bottom_b,
+            Stackable::Circle(s) => s.bottom_b,
+        }
+    }
+}
+
+/// Tiered skirt.
+#[derive(Clone, Debug, Component)]
+pub struct SkirtLevels {
+    /// The base and the tiers, top to bottom.
+    #[part]
+    pub tiers: Vec<Stackable>,
+    /// Waist.
+    #[interface]
+    pub top: InterfaceId,
+    /// Tier to tier.
+    #[stitches]
+    pub stitches: Vec<StitchRule>,
+    /// Rise the skirt sits at.
+    pub rise: f64,
+}
+
+impl SkirtLevels {
+    /// Build from `levels-skirt` parameters.
+    pub fn new(a: &mut Arena, body: &Body, design: &Design, rise: Option<f64>) -> Result<SkirtLevels> {
+        let l = &design.levels_skirt;
+        let leg = body.derived().leg_length;
+        let total = l.length * leg;
+        let base_len0 = total * l.base_length_frac;
+        let level_len = (total - base_len0) / l.num_levels as f64;
+        // QUIRK: the base always adds the hip depth of the *parameter* rise.
+        let base_len = body.hips_line * l.rise + base_len0;
+        let rise = rise.unwrap_or(l.rise);
+        let base = match l.base {
+            LevelsBase::Skirt2 => Stackable::Skirt2(Skirt2::new(a, body, design, "", Some(base_len), Some(rise), false, true)?),
+            LevelsBase::PencilSkirt => Stackable::Pencil(PencilSkirt::new(a, body, design, Some(base_len), Some(rise), false)?),
+            LevelsBase::SkirtCircle => Stackable::Circle(SkirtCircle::new(a, body, design, "", Some(base_len), Some(rise), false, false)?),
+            LevelsBase::AsymmSkirtCircle => Stackable::Circle(SkirtCircle::new(a, body, design, "", Some(base_len), Some(rise), false, true)?),
+        };
+        let angle = match &base {
+            Stackable::Pencil(p) => p.low_angle,
+            _ => 0.0,
+        };
+        let mut tiers = vec![base];
+        let mut stitches = Vec::new();
+        let mut lbody = body.clone();
+        let ruffle = l.level_ruffle;
+        for i in 0..l.num_levels {
+            let prev = tiers.last().expect("base");
+            lbody.waist = ruffle * prev.bottom().length(a);
+            lbody.waist_back_width = ruffle * prev.bottom_b().length(a);
+            let tag = i.to_string();
+            // QUIRK: a tier takes its own `rise` parameter with the overwritten waist.
+            let level = match l.level {
+                LevelKind::Skirt2 => Stackable::Skirt2(Skirt2::new(a, &lbody, design, &tag, Some(level_len), None, false, false)?),
+                LevelKind::SkirtCircle => Stackable::Circle(SkirtCircle::new(a, &lbody, design, &tag, Some(level_len), None, false, false)?),
+                LevelKind::AsymmSkirtCircle => Stackable::Circle(SkirtCircle::new(a, &lbody, design, &tag, Some(level_len), None, false, true)?),
+            };
+            level.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, -angle]));
+            let prev_bottom = tiers.last().expect("base").bottom();
+            level.place_by_interface(a, level.top(), prev_bottom, 5.0, Align::Center);
+            stitches.push(StitchRule::new(a, prev_bottom, level.top())?);
+            tiers.push(level);
+        }
+        Ok(SkirtLevels { top: tiers[0].top(), tiers, stitches, rise })
+    }
+}

@@ -1,0 +1,200 @@
+//! Sleeves: the armhole cut-outs, the sleeve panels built around the inverted
+//! armhole (the sleeve opening), cuffs.
+
+use crate::bands::{Cuff, CuffParams};
+use crate::bodice::SleeveParams;
+use crate::common::{register, v2, v3};
+use crate::design::ArmholeShape;
+use crate::shapes;
+use garmentcode::math::close_enough;
+use garmentcode::ops::even_armhole_openings;
+use garmentcode::{Align, Arena, Body, Component, Curve, EdgeSeq, InterfaceId, PanelId, PartExt, Result, Rotation, StitchRule, Vec2};
+
+/// Front or back half of a sleeve: cuff edge at x = 0, underarm seam below, the
+/// sleeve opening at the far end, shoulder seam on top.
+#[derive(Clone, Debug, Component)]
+pub struct SleevePanel {
+    /// The panel.
+    #[panel]
+    pub panel: PanelId,
+    /// The opening (sewn into the armhole).
+    #[interface(rename = "in")]
+    pub in_: InterfaceId,
+    /// The free end (cuff side).
+    #[interface]
+    pub out: InterfaceId,
+    /// Shoulder seam.
+    #[interface]
+    pub top: InterfaceId,
+    /// Underarm seam.
+    #[interface]
+    pub bottom: InterfaceId,
+}
+
+impl SleevePanel {
+    /// Build around `open_shape` (the opening chain, moved into the panel).
+    pub fn new(a: &mut Arena, name: &str, body: &Body, s: &SleeveParams, open_shape: &EdgeSeq, length_shift: f64) -> Result<SleevePanel> {
+        let d = body.derived();
+        let shoulder_angle = d.shoulder_incl.to_radians();
+        let rest_angle = f64::max(s.sleeve_angle.to_radians(), shoulder_angle);
+        let mut standing = s.standing_shoulder;
+        let (o0, o1) = open_shape.shortcut(a);
+        let end_width = f64::max(s.end_width * (o0.y - o1.y).abs(), body.wrist / 2.0);
+        if !close_enough(s.connect_ruffle, 1.0, 1e-4) {
+            open_shape.stretch(a, s.connect_ruffle);
+        }
+        let (o0, o1) = open_shape.shortcut(a);
+        let opening_length = (o0.x - o1.x).abs();
+        let arm_width = (o0.y - o1.y).abs();
+        let length = f64::max(s.length * (body.arm_length - opening_length) + length_shift, 5.0);
+        let mut edges = EdgeSeq::from_points(a, &[v2(0.0, 0.0), v2(0.0, -end_width), v2(length, -arm_width)], false)?;
+        let joint = a.end(edges.last_edge());
+        open_shape.snap_to(a, a.pos(joint));
+        a.set_start(open_shape[0], joint);
+        edges.extend(open_shape.iter().copied());
+        edges.close_loop(a)?;
+        if standing {
+            if rest_angle > shoulder_angle + 5f64.to_radians() {
+                let top_edge = edges.last_edge();
+                let start = a.start(top_edge);
+                let p = a.pos(start);
+                let len = s.standing_shoulder_len;
+                let x_shift = len * (rest_angle - shoulder_angle).cos();
+                let y_shift = len * (rest_angle - shoulder_angle).sin();
+                let new_v = a.vertex(Vec2::new(p.x - x_shift, p.y + y_shift));
+                let standing_edge = a.edge(start, new_v, Curve::Line)?;
+                a.set_start(top_edge, new_v);
+                edges.substitute(top_edge, &[standing_edge, top_edge])?;
+            } else {
+                standing = false;
+            }
+        }
+        let panel = a.panel_with_edges(name, edges.clone());
+        let in_ = a.interface_gathered(panel, open_shape.clone(), s.connect_ruffle)?;
+        let out = a.interface_gathered(panel, edges[0], s.cuff_top_ruffle)?;
+        let top = if standing { a.interface(panel, edges.slice(-2, edges.len() as isize)) } else { a.interface(panel, edges.last_edge()) };
+        let bottom = a.interface(panel, edges[1]);
+        register(a, panel, &[("in", in_), ("out", out), ("top", top), ("bottom", bottom)]);
+        panel.set_length_interface(a, bottom);
+        let pivot = a.pos(a.start(edges.last_edge()));
+        panel.set_pivot(a, pivot, false);
+        panel.translate_to(a, v3(-body.shoulder_w / 2.0, body.height - body.head_l, 0.0));
+        Ok(SleevePanel { panel, in_, out, top, bottom })
+    }
+}
+
+/// A sleeve (or just the armhole shapes of a sleeveless side).
+#[derive(Clone, Debug, Component)]
+#[component(name = self.name, length = Self::sleeve_length)]
+pub struct Sleeve {
+    /// `Sleeve_<side>`.
+    pub name: String,
+    /// Armhole shape cut into the front torso.
+    pub in_front_shape: EdgeSeq,
+    /// Armhole shape cut into the back torso.
+    pub in_back_shape: EdgeSeq,
+    /// Front panel `<side>_sleeve_f`.
+    #[part]
+    pub front: Option<SleevePanel>,
+    /// Back panel `<side>_sleeve_b`.
+    #[part]
+    pub back: Option<SleevePanel>,
+    /// Cuff.
+    #[part]
+    pub cuff: Option<Cuff>,
+    /// The opening, front then back (sewn into the armhole).
+    #[interface(rename = "in")]
+    pub in_: Option<InterfaceId>,
+    /// The free end (of the cuff, if any).
+    #[interface]
+    pub out: Option<InterfaceId>,
+    /// Seams of the sleeve and the cuff.
+    #[stitches]
+    pub stitches: Vec<StitchRule>,
+}
+
+impl Sleeve {
+    /// Build the sleeve of side `tag` for an armhole `connecting_width` deep between
+    /// torso panels `front_w` and `back_w` wide at that depth.
+    pub fn new(a: &mut Arena, tag: &str, body: &Body, s: &SleeveParams, connecting_width: f64, front_w: f64, back_w: f64) -> Result<Sleeve> {
+        let d = body.derived();
+        let sleeve_balance = d.base_sleeve_balance / 2.0;
+        let rest_angle = f64::max(s.sleeve_angle.to_radians(), d.shoulder_incl.to_radians());
+        let sc = s.smoothing_coeff;
+        let shape = |a: &mut Arena, incl: f64| -> Result<(EdgeSeq, Option<EdgeSeq>)> {
+            if s.sleeveless {
+                match s.armhole_shape {
+                    ArmholeShape::ArmholeSquare => Ok((shapes::armhole_square(a, incl, connecting_width)?, None)),
+                    ArmholeShape::ArmholeAngle => Ok((shapes::armhole_angle(a, incl, connecting_width, sc, sc)?, None)),
+                    ArmholeShape::ArmholeCurve => shapes::armhole_curve(a, incl, connecting_width, rest_angle, s.opening_dir_mix, false),
+                }
+            } else {
+                shapes::armhole_curve(a, incl, connecting_width, rest_angle, s.opening_dir_mix, true)
+            }
+        };
+        let (front_project, front_opening) = shape(a, front_w - sleeve_balance)?;
+        let (back_project, back_opening) = shape(a, back_w - sleeve_balance)?;
+        let mut sleeve = Sleeve {
+            name: format!("Sleeve_{tag}"),
+            in_front_shape: front_project,
+            in_back_shape: back_project,
+            front: None,
+            back: None,
+            cuff: None,
+            in_: None,
+            out: None,
+            stitches: Vec::new(),
+        };
+        let (Some(mut front_opening), Some(mut back_opening)) = (front_opening, back_opening) else {
+            return Ok(sleeve);
+        };
+        if front_w != back_w {
+            let tol = 0.2 / front_opening.length(a);
+            even_armhole_openings(a, &mut front_opening, &mut back_opening, tol)?;
+        }
+        let cuff_len_adj = match s.cuff_type {
+            None => 0.0,
+            Some(_) => f64::min(s.cuff_len * body.arm_length, s.length * body.arm_length * 0.7),
+        };
+        let front = SleevePanel::new(a, &format!("{tag}_sleeve_f"), body, s, &front_opening, -cuff_len_adj)?;
+        front.panel.translate_by(a, v3(0.0, 0.0, 15.0));
+        let back = SleevePanel::new(a, &format!("{tag}_sleeve_b"), body, s, &back_opening, -cuff_len_adj)?;
+        back.panel.translate_by(a, v3(0.0, 0.0, -15.0));
+        sleeve.stitches.push(StitchRule::new(a, front.top, back.top)?);
+        sleeve.stitches.push(StitchRule::new(a, front.bottom, back.bottom)?);
+        let back_in = back.in_.reverse(a, true);
+        sleeve.in_ = Some(a.interface_from(&[front.in_, back_in]));
+        let mut out = a.interface_from(&[front.out, back.out]);
+        sleeve.front = Some(front);
+        sleeve.back = Some(back);
+        if let Some(kind) = s.cuff_type {
+            let circ = f64::max(out.length(a) / s.cuff_top_ruffle, body.wrist);
+            let params = CuffParams {
+                b_width: circ,
+                cuff_len: cuff_len_adj,
+                skirt_fraction: s.cuff_skirt_fraction,
+                skirt_flare: s.cuff_skirt_flare,
+                skirt_ruffle: s.cuff_skirt_ruffle,
+            };
+            let cuff = Cuff::new(a, kind, &format!("sl_{tag}"), &params)?;
+            cuff.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, -90.0]));
+            cuff.place_by_interface(a, cuff.top(), out, 2.0, Align::Top);
+            sleeve.stitches.push(StitchRule::new(a, cuff.top(), out)?);
+            out = cuff.bottom();
+            sleeve.cuff = Some(cuff);
+        }
+        sleeve.out = Some(out);
+        sleeve.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, body.arm_pose_angle]));
+        sleeve.set_panel_label(a, "arm", true);
+        Ok(sleeve)
+    }
+
+    fn sleeve_length(&self, a: &Arena) -> f64 {
+        let Some(front) = &self.front else { return 0.0 };
+        let l = front.panel.length(a);
+        match &self.cuff {
+            Some(c) => l + c.part_length(a),
+            None => l,
+        }
+    }
+}
