@@ -45,3 +45,22 @@ fn reference_specs_have_no_errors() {
         assert!(errors.is_empty(), "{}: {errors:?}", spec.display());
     }
 }
+
+#[test]
+fn self_intersection_verdicts_agree_with_the_reference() {
+    use garmentcode::pattern::ProblemKind;
+    let mut flagged = 0;
+    for case in cases() {
+        let spec = case.join("specification.json");
+        if !spec.exists() {
+            continue;
+        }
+        let p = Pattern::from_json(&std::fs::read_to_string(&spec).unwrap()).unwrap();
+        let checks: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(case.join("checks.json")).unwrap()).unwrap();
+        let expected = checks["self_intersecting"].as_bool().unwrap();
+        let ours = validate(&p).iter().any(|x| x.kind == ProblemKind::SelfIntersection);
+        assert_eq!(ours, expected, "{}", case.display());
+        flagged += usize::from(ours);
+    }
+    assert!(flagged > 15, "about a third of the cases are flagged, got {flagged}");
+}

@@ -427,9 +427,12 @@ pub fn even_armhole_openings(a: &mut Arena, front: &mut EdgeSeq, back: &mut Edge
     let slope = s1 - s0;
     let slope_perp = Vec2::new(-slope.y, slope.x);
     let mid = (s0 + s1) / 2.0;
-    let line = intersect::Seg::Line([mid - 20.0 * slope_perp, mid + 20.0 * slope_perp]);
-    let target = intersect::Seg::from_segment(&a.geom(cfront.last_edge()).segment());
-    let hits = intersect::intersect(&target, &line);
+    let (l0, l1) = (mid - 20.0 * slope_perp, mid + 20.0 * slope_perp);
+    let line = intersect::Seg::Line([[l0.x, l0.y], [l1.x, l1.y]]);
+    let target = intersect::to_seg(&a.geom(cfront.last_edge()).segment());
+    // The reference builds this line from Python complex numbers, the curve from numpy ones.
+    let hits = intersect::svg::try_intersect_as(&target, intersect::Num::Numpy, &line, intersect::Num::Python)
+        .map_err(|e| Error::Geometry(format!("balancing the sleeve openings: {e}")))?;
     if let Some(&(t, _)) = hits.first() {
         if !(close_enough(t, 0.0, tol) || close_enough(t, 1.0, tol)) {
             let last = front.last_edge();

@@ -28,6 +28,10 @@ pub fn body(name: &str) -> Option<Body> {
 /// defaults are listed).
 pub const DESIGNS: &[(&str, &str)] = &[
     ("t-shirt", include_str!("../data/designs/t-shirt.yaml")),
+    ("fitted-dress", include_str!("../data/designs/fitted-dress.yaml")),
+    ("sundress", include_str!("../data/designs/sundress.yaml")),
+    ("shirt-dress", include_str!("../data/designs/shirt-dress.yaml")),
+    ("jumpsuit", include_str!("../data/designs/jumpsuit.yaml")),
 ];
 
 /// The design built when none is given.

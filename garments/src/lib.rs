@@ -12,6 +12,7 @@
 
 pub mod bands;
 pub mod bodice;
+pub mod build;
 pub mod builtin;
 pub mod circle_skirt;
 pub mod collars;

@@ -1,0 +1,75 @@
+//! Intersections of lines and Bézier curves, and the reference's self-intersection
+//! check of panel outlines.
+//!
+//! The routines in [`svg`] agree with the ones the reference calls (svgpathtools) bit
+//! for bit, including the order of results and their tolerances, so verdicts near
+//! tangencies and shared vertices are the reference's. Arcs are replaced by 11
+//! straight pieces first, as the reference does.
+
+pub mod svg;
+
+pub use svg::{IntersectError, Num, Seg};
+
+use crate::arena::{Arena, PanelId};
+use crate::bezier::Bezier;
+use crate::edge::{Curve, Edge, Segment};
+use crate::pattern::PanelSpec;
+
+fn p(v: crate::math::Vec2) -> svg::P {
+    [v.x, v.y]
+}
+
+/// The segment of an explicit line or Bézier (an arc becomes its chord; callers
+/// linearise arcs first).
+pub fn to_seg(s: &Segment) -> Seg {
+    match s {
+        Segment::Line(a, b) => Seg::Line([p(*a), p(*b)]),
+        Segment::Bezier(Bezier::Quadratic(q)) => Seg::Quad(q.map(p)),
+        Segment::Bezier(Bezier::Cubic(c)) => Seg::Cubic(c.map(p)),
+        Segment::Arc(a) => Seg::Line([p(a.start), p(a.end)]),
+    }
+}
+
+/// Parameter pairs where two segments meet, as svgpathtools reports them.
+pub fn intersect(a: &Seg, b: &Seg) -> Result<Vec<(f64, f64)>, IntersectError> {
+    svg::try_intersect(a, b)
+}
+
+/// The reference's panel check: any intersection of two outline segments other
+/// than at a shared end point. Inputs svgpathtools would raise on count as
+/// intersecting (a broken outline is not a good one).
+pub fn has_self_intersection(segs: &[Seg]) -> bool {
+    svg::try_has_self_intersection(segs).unwrap_or(true)
+}
+
+fn edge_segments(e: &Edge, out: &mut Vec<Seg>) {
+    match e.curve {
+        Curve::Arc { .. } => {
+            let mut pts = vec![e.start];
+            pts.extend(e.linearize(10));
+            pts.push(e.end);
+            for w in pts.windows(2) {
+                out.push(Seg::Line([p(w[0]), p(w[1])]));
+            }
+        }
+        _ => out.push(to_seg(&e.segment())),
+    }
+}
+
+/// Outline segments of a panel for the self-intersection check.
+pub fn panel_segments(a: &Arena, panel: PanelId) -> Vec<Seg> {
+    let mut out = Vec::new();
+    for &e in panel.edges(a).iter() {
+        edge_segments(&a.geom(e), &mut out);
+    }
+    out
+}
+
+/// Outline segments of a written panel (same construction as [`panel_segments`]).
+pub fn spec_segments(panel: &PanelSpec) -> Vec<Seg> {
+    let mut out = Vec::new();
+    for i in 0..panel.edges.len() {
+        edge_segments(&panel.edge_geom(i), &mut out);
+    }
+    out
+}

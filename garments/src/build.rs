@@ -1,0 +1,124 @@
+//! From a design and a body to a sewing pattern and the reference's validity checks:
+//! the one pipeline shared by the command-line tool, the dataset sampler and the web
+//! configurator.
+
+use crate::meta::{MetaGarment, check_param_combinations};
+use crate::Design;
+use garmentcode::{Arena, Body, Component, Pattern, PartExt};
+use std::fmt;
+
+/// Why a design cannot be built.
+#[derive(Clone, Debug, PartialEq)]
+pub enum BuildError {
+    /// No upper garment, waistband or bottom: nothing to sew (the reference refuses
+    /// to save an empty pattern).
+    Empty,
+    /// The garment program failed (a neckline wider than its shoulder edge, a dart
+    /// that cannot form a triangle, ...).
+    Geometry(garmentcode::Error),
+}
+
+impl fmt::Display for BuildError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BuildError::Empty => f.write_str("empty garment: the design has no upper garment, waistband or bottom"),
+            BuildError::Geometry(e) => write!(f, "the design cannot be built: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for BuildError {}
+
+impl From<garmentcode::Error> for BuildError {
+    fn from(e: garmentcode::Error) -> Self {
+        BuildError::Geometry(e)
+    }
+}
+
+/// The reference's validity checks of a built garment (the design filters of its
+/// dataset sampler), with the keys of the reference cases' `checks.json`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Checks {
+    /// `Ok` or the filter's message (empty garment or lone belt, gathered skirt
+    /// without a band, heavy flared skirt without support).
+    pub param_combinations: Result<(), &'static str>,
+    /// Sum of the parts' lengths, cm.
+    pub total_length: f64,
+    /// Floor distance from the neck base (`height − head_l`), cm.
+    pub floor_length: f64,
+    /// `total_length ≤ floor_length + 1`.
+    pub total_length_ok: bool,
+    /// Some panel outline crosses itself.
+    pub self_intersecting: bool,
+}
+
+impl Checks {
+    /// Every check passed.
+    pub fn passed(&self) -> bool {
+        self.param_combinations.is_ok() && self.total_length_ok && !self.self_intersecting
+    }
+
+    /// Failed checks as readable warnings.
+    pub fn warnings(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        if let Err(m) = self.param_combinations {
+            out.push(format!("design filter: {m}"));
+        }
+        if !self.total_length_ok {
+            out.push(format!(
+                "too long: the garment is {:.1} cm long but the floor is {:.1} cm below the neck",
+                self.total_length, self.floor_length
+            ));
+        }
+        if self.self_intersecting {
+            out.push("self-intersection: a panel outline crosses itself".into());
+        }
+        out
+    }
+
+    /// `checks.json`.
+    pub fn to_json(&self) -> String {
+        let pc = match self.param_combinations {
+            Ok(()) => "ok".to_string(),
+            Err(m) => format!("IncorrectElementConfiguration: {m}"),
+        };
+        let v = serde_json::json!({
+            "param_combinations": pc,
+            "total_length": self.total_length,
+            "floor_length": self.floor_length,
+            "total_length_ok": self.total_length_ok,
+            "self_intersecting": self.self_intersecting,
+        });
+        serde_json::to_string_pretty(&v).expect("checks serialise") + "\n"
+    }
+}
+
+/// A built garment.
+#[derive(Clone, Debug)]
+pub struct Built {
+    /// The sewing pattern.
+    pub pattern: Pattern,
+    /// The validity checks.
+    pub checks: Checks,
+}
+
+/// Build `design` on `body` into the pattern named `name`, reusing `arena`.
+pub fn build_in(arena: &mut Arena, design: &Design, body: &Body, name: &str) -> Result<Built, BuildError> {
+    arena.clear();
+    let param_combinations = check_param_combinations(design);
+    let garment = MetaGarment::new(arena, body, design)?;
+    if garment.panel_ids().is_empty() {
+        return Err(BuildError::Empty);
+    }
+    let total_length = Component::length(&garment, arena);
+    let floor_length = body.height - body.head_l;
+    let self_intersecting = garment.is_self_intersecting(arena);
+    let pattern = garment.assemble(arena, name)?;
+    let checks = Checks { param_combinations, total_length, floor_length, total_length_ok: total_length <= floor_length + 1.0, self_intersecting };
+    Ok(Built { pattern, checks })
+}
+
+/// Build `design` on `body` into the pattern named `name`.
+pub fn build(design: &Design, body: &Body, name: &str) -> Result<Built, BuildError> {
+    build_in(&mut Arena::new(), design, body, name)
+}
