@@ -14,6 +14,17 @@ USAGE:
     garmentcode <COMMAND> [OPTIONS]
 
 COMMANDS:
+    build [--design FILE.yaml|NAME] [--body NAME|FILE.yaml] --out DIR [--strict] [--no-png]
+        Build a garment: DIR/specification.json, pattern.svg, pattern.png,
+        design_params.yaml, body_measurements.yaml and checks.json. Without
+        --design the built-in t-shirt; without --body the neutral body mean_all.
+        Built-in designs: t-shirt, fitted-dress, sundress, shirt-dress, jumpsuit.
+        Built-in bodies: mean_all, mean_female, mean_male, f_smpl_average_A40,
+        m_smpl_average_A40. The reference's checks are printed as warnings;
+        --strict rejects a design that fails one (exit 1, nothing written).
+    schema [--format reference-yaml|json-schema|table]
+        The design space: every parameter with its type, range, default and
+        sampling probability.
     check SPEC.json [--strict] [--format text|json]
         Validate a pattern: errors (open loops, bad indices, dangling stitches,
         edges stitched twice) and warnings (self-intersections, stitched edges of
@@ -33,6 +44,8 @@ fn main() {
     let command = argv.remove(0);
     let args = Args::new(&command, argv);
     let result = match command.as_str() {
+        "build" => commands::build::run(args),
+        "schema" => commands::schema::run(args),
         "check" => commands::check::run(args),
         "render" => commands::render::run(args),
         "help" | "--help" | "-h" => {
@@ -50,6 +63,10 @@ fn main() {
         Err(CliError::Input(m)) => {
             eprintln!("error: {m}");
             std::process::exit(2);
+        }
+        Err(CliError::Rejected(m)) => {
+            eprintln!("error: {m}");
+            std::process::exit(1);
         }
     }
 }

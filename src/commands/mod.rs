@@ -1,7 +1,9 @@
 //! Sub-commands of the `garmentcode` tool.
 
+pub mod build;
 pub mod check;
 pub mod render;
+pub mod schema;
 
 use crate::args::UsageError;
 use crate::output::OutputSet;
@@ -14,6 +16,8 @@ pub enum CliError {
     Usage(String),
     /// Unreadable or invalid input, or a design that cannot be built (exit 2).
     Input(String),
+    /// A valid design rejected by a requested check (exit 1).
+    Rejected(String),
 }
 
 impl From<UsageError> for CliError {
@@ -36,4 +40,36 @@ pub fn add_drawings(set: &mut OutputSet, pattern: &Pattern, png: bool) -> garmen
         set.add("pattern.png", garmentcode::draw::to_png(pattern, &opts)?);
     }
     Ok(())
+}
+
+/// The design to build: a built-in name, a design file, or the default t-shirt.
+pub fn load_design(arg: Option<&str>) -> Result<(garments::Design, String), CliError> {
+    use garmentcode::Params;
+    let name = arg.unwrap_or(garments::builtin::DEFAULT_DESIGN);
+    if let Some(d) = garments::builtin::design(name) {
+        return Ok((d, name.to_string()));
+    }
+    if !std::path::Path::new(name).exists() {
+        let known: Vec<&str> = garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect();
+        return Err(CliError::Input(format!("{name}: no such design file, and not a built-in design (built-in: {})", known.join(", "))));
+    }
+    let text = std::fs::read_to_string(name).map_err(|e| CliError::Input(format!("{name}: cannot read: {e}")))?;
+    let d = garmentcode::params::read_design(&text, name, &garments::Design::design_space()).map_err(|e| CliError::Input(e.to_string()))?;
+    let stem = std::path::Path::new(name).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "design".into());
+    Ok((d, stem))
+}
+
+/// The body: a built-in name, a body file, or the neutral body.
+pub fn load_body(arg: Option<&str>) -> Result<(garmentcode::Body, String), CliError> {
+    let name = arg.unwrap_or(garments::builtin::DEFAULT_BODY);
+    if let Some(b) = garments::builtin::body(name) {
+        return Ok((b, name.to_string()));
+    }
+    if !std::path::Path::new(name).exists() {
+        let known: Vec<&str> = garments::builtin::BODIES.iter().map(|(n, _)| *n).collect();
+        return Err(CliError::Input(format!("{name}: no such body file, and not a built-in body (built-in: {})", known.join(", "))));
+    }
+    let text = std::fs::read_to_string(name).map_err(|e| CliError::Input(format!("{name}: cannot read: {e}")))?;
+    let b = garmentcode::Body::from_yaml(&text, name).map_err(|e| CliError::Input(e.to_string()))?;
+    Ok((b, name.to_string()))
 }
