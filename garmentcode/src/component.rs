@@ -78,6 +78,11 @@ pub trait Interfaces {
 /// own): it exposes the interface that slot connects through. Requiring
 /// `Slot<Top>` of a bottom garment makes plugging in a component without a `top`
 /// interface a compile error.
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` does not expose the interface slot `{S}` needs",
+    label = "no `#[interface]` for slot `{S}`",
+    note = "declare the interface on the component with `#[interface]` on an `InterfaceId` field named after the slot (e.g. `top`)"
+)]
 pub trait Slot<S> {
     /// The interface filling the slot.
     fn slot(&self) -> InterfaceId;

@@ -3,6 +3,7 @@
 //! re-fit to end tangents at a fixed length that inverts sleeve openings.
 
 pub mod bfgs;
+pub mod inversion;
 
 use crate::math::{Vec2, abs_to_rel_vector, norm};
 
@@ -35,7 +36,11 @@ pub fn quadratic_with_extremum(p: Vec2) -> Option<Vec2> {
     Some(Vec2::new(2.0 * (p.x - 0.25), 2.0 * p.y))
 }
 
-/// Cubic control points re-fitted to end tangents `t0`, `t1` at length `target_len`.
-pub fn match_tangents(cps: [Vec2; 4], _t0: Vec2, _t1: Vec2, _target_len: f64) -> [Vec2; 4] {
-    cps
+/// Cubic control points re-fitted to end tangents `t0`, `t1` at length
+/// `target_len`, the start fixed and the end moved along the initial chord: the
+/// sleeve-opening and hood inversion (the reference's `curve_match_tangents`),
+/// minimising the reference's own objective deterministically (see [`inversion`]).
+pub fn match_tangents(cps: [Vec2; 4], t0: Vec2, t1: Vec2, target_len: f64) -> [Vec2; 4] {
+    let p = cps.map(|v| [v.x, v.y]);
+    inversion::match_tangents(p, [t0.x, t0.y], [t1.x, t1.y], target_len).map(|q| Vec2::new(q[0], q[1]))
 }

@@ -27,8 +27,11 @@ pub type P = [f64; 2];
 /// `QuadraticBezier` and `CubicBezier`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Seg {
+    /// Straight segment (start, end).
     Line([P; 2]),
+    /// Quadratic Bézier (start, control, end).
     Quad([P; 3]),
+    /// Cubic Bézier (start, control 1, control 2, end).
     Cubic([P; 4]),
 }
 

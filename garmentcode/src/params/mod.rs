@@ -17,7 +17,7 @@ mod io;
 mod sample;
 mod space;
 
-pub use io::{DesignError, read_design, read_design_values, write_design};
+pub use io::{DesignError, from_values, read_design, read_design_values, write_design, write_values};
 pub use sample::{Sampler, sample_rng};
 pub use space::DesignSpace;
 

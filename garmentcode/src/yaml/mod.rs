@@ -62,8 +62,11 @@ pub enum Value {
 /// parsed trees can be compared with trees built in code.
 #[derive(Debug, Clone)]
 pub struct Node {
+    /// The value.
     pub value: Value,
+    /// 1-based line where the value starts (0 when built in code).
     pub line: u32,
+    /// 1-based column where the value starts (0 when built in code).
     pub col: u32,
 }
 
@@ -168,6 +171,7 @@ impl From<Value> for Node {
 
 /// Anything [`to_string`] can write: a [`Value`] or a [`Node`].
 pub trait AsValue {
+    /// The value to write.
     fn as_value(&self) -> &Value;
 }
 
@@ -188,8 +192,11 @@ impl AsValue for Node {
 /// Displays as `line 12, column 7: expected ':' after mapping key "range"`.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct YamlError {
+    /// 1-based line.
     pub line: u32,
+    /// 1-based column.
     pub col: u32,
+    /// What is wrong.
     pub message: String,
 }
 

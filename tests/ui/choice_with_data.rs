@@ -1,0 +1,9 @@
+use garmentcode::Choice;
+
+#[derive(Clone, Copy, Choice)]
+enum Cuff {
+    Band(u32),
+    Skirt,
+}
+
+fn main() {}
