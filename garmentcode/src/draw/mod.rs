@@ -1,21 +1,83 @@
-//! Drawings of a pattern (PROVISIONAL: replaced by the full SVG/PNG module).
+//! Drawings of a flat sewing pattern: an SVG document and its PNG rendering.
+//!
+//! The picture follows the reference's placed drawing (`VisPattern.get_svg`,
+//! pattern-format.md §11) so that users of the reference recognise it: each panel is
+//! flipped to y-down, rotated by the in-plane angle of its 3D rotation and moved to its
+//! flattened 3D position; front panels (translation z ≥ 0) are drawn on the left, back
+//! panels shifted to the right of them; sizes are centimetres, filled in the
+//! reference's pink with its outline and panel names.
+//!
+//! On top of that the drawing marks the stitches (the reference draws none): every
+//! stitch gets a colour and a numbered marker (its index in `pattern.stitches`) at the
+//! arc-length midpoint of both of its edges, just inside the panel, with the edges
+//! themselves traced in that colour, so one sees what sews to what. Vertex and edge
+//! indices (the reference's `view_ids`) can be switched on.
+//!
+//! Both outputs are built from one layout of the sheet, so the PNG shows exactly
+//! what the SVG describes, and both are deterministic: the same pattern and options
+//! give the same bytes. Text in the PNG uses a small built-in stroke font, so no
+//! system fonts are needed.
 
-use crate::error::{Error, Result};
+mod font;
+mod layout;
+mod raster;
+mod svg;
+
+#[cfg(test)]
+mod tests;
+
+use crate::error::Result;
 use crate::pattern::Pattern;
 
-/// Drawing options.
-#[derive(Clone, Debug, Default)]
-pub struct DrawOptions {}
-
-/// SVG drawing.
-pub fn to_svg(p: &Pattern, _opts: &DrawOptions) -> Result<String> {
-    if p.panels.is_empty() {
-        return Err(Error::Design("cannot draw an empty pattern".into()));
-    }
-    Ok(String::from("<svg xmlns=\"http://www.w3.org/2000/svg\"/>\n"))
+/// What to draw and at which resolution.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DrawOptions {
+    /// Panel names at the centre of each panel (the reference's `with_text`).
+    pub with_text: bool,
+    /// Vertex indices at vertices and edge indices at edge midpoints (the
+    /// reference's `view_ids`).
+    pub view_ids: bool,
+    /// Numbered, coloured markers on both edges of every stitch.
+    pub stitch_markers: bool,
+    /// Free space around the panels, in cm (the reference uses 2).
+    pub margin: f64,
+    /// PNG resolution in pixels per cm (the reference rasterises at 3).
+    pub px_per_cm: f64,
+    /// PNG background; `None` keeps it transparent, as the reference's PNG.
+    pub background: Option<[u8; 3]>,
 }
 
-/// PNG drawing.
-pub fn to_png(_p: &Pattern, _opts: &DrawOptions) -> Result<Vec<u8>> {
-    Err(Error::Design("PNG drawing is not available yet".into()))
+impl Default for DrawOptions {
+    fn default() -> Self {
+        DrawOptions {
+            with_text: true,
+            view_ids: false,
+            stitch_markers: true,
+            margin: 2.0,
+            px_per_cm: 3.0,
+            background: None,
+        }
+    }
+}
+
+/// The placed drawing of `p` as an SVG document (sizes in cm, y down).
+///
+/// Fails on an empty pattern ([`Error::Design`](crate::Error::Design), as the
+/// reference refuses to draw one) and, with [`Error::Input`](crate::Error::Input), on
+/// edges or stitches that refer to missing vertices, panels or edges and on
+/// non-finite numbers.
+pub fn to_svg(p: &Pattern, opts: &DrawOptions) -> Result<String> {
+    let sheet = layout::layout(p, opts)?;
+    Ok(svg::write(&sheet, &p.name))
+}
+
+/// The same drawing as [`to_svg`], rasterised with anti-aliasing at
+/// `opts.px_per_cm` and encoded as PNG.
+///
+/// The image is `ceil(view box size × px_per_cm)` pixels wide and high (the
+/// reference's rasteriser rounds instead, so its PNG can be one pixel smaller), RGBA,
+/// transparent outside the panels unless `opts.background` is set.
+pub fn to_png(p: &Pattern, opts: &DrawOptions) -> Result<Vec<u8>> {
+    let sheet = layout::layout(p, opts)?;
+    raster::render(&sheet, opts)
 }
