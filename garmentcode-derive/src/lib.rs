@@ -52,3 +52,104 @@ pub fn component(args: TokenStream, item: TokenStream) -> TokenStream {
     )
     .into()
 }
+
+/// Expansion snapshots: what each derive generates for a small input.
+#[cfg(test)]
+mod expansion {
+    use super::expand;
+    use proc_macro2::TokenStream;
+    use syn::DeriveInput;
+
+    fn pretty(f: fn(&DeriveInput) -> TokenStream, src: &str) -> String {
+        let input: DeriveInput = syn::parse_str(src).expect("valid input");
+        let file: syn::File = syn::parse2(f(&input)).expect("the expansion parses");
+        prettyplease::unparse(&file)
+    }
+
+    #[test]
+    fn params() {
+        insta::assert_snapshot!(pretty(
+            expand::params::derive,
+            r#"
+            struct Skirt {
+                /// Length as a fraction of the leg.
+                #[param(range = -0.2..=0.95, default = 0.2)]
+                length: f64,
+                /// Number of gores.
+                #[param(options = [4, 6, 8], default = 4, prob = 0.5)]
+                panels: i64,
+                /// Hem finish.
+                #[param(default = None, prob = 0.3, null_option = false)]
+                hem: Option<Hem>,
+                #[param(rename = "flare-skirt")]
+                flare: Flare,
+            }
+            "#
+        ));
+    }
+
+    #[test]
+    fn choice() {
+        insta::assert_snapshot!(pretty(
+            expand::choice::derive,
+            r#"
+            enum Hem {
+                Plain,
+                #[param(rename = "rolled-hem")]
+                Rolled,
+            }
+            "#
+        ));
+    }
+
+    #[test]
+    fn component() {
+        insta::assert_snapshot!(pretty(
+            expand::component::derive,
+            r#"
+            #[component(name = self.name, length = Self::skirt_length)]
+            struct Skirt {
+                name: String,
+                #[part]
+                front: PanelId,
+                #[part]
+                cuffs: Vec<Cuff>,
+                #[interface]
+                top: InterfaceId,
+                #[interface(rename = "in")]
+                in_: Option<InterfaceId>,
+                #[stitches]
+                stitches: Vec<StitchRule>,
+            }
+            "#
+        ));
+    }
+
+    #[test]
+    fn panel_class() {
+        insta::assert_snapshot!(pretty(
+            expand::component::derive,
+            r#"
+            struct Band {
+                #[panel]
+                panel: PanelId,
+                #[interface]
+                top: InterfaceId,
+            }
+            "#
+        ));
+    }
+
+    #[test]
+    fn error_comes_with_a_stub_impl() {
+        insta::assert_snapshot!(pretty(
+            expand::params::derive,
+            r#"
+            struct Bad {
+                #[param(range = 2..=1, default = 1)]
+                n: i64,
+            }
+            "#
+        ));
+    }
+}
