@@ -341,12 +341,11 @@ fn fit_location_on_corner(c1: &Segment, c2: &Segment, opening: Vec2) -> [f64; 2]
         let mut best_f = f64::INFINITY;
         for fixed in [0.0, 1.0] {
             let l1 = min_1d(d2, b - fixed * d1);
-            for cand in [[fixed, l1]] {
-                let f = obj(cand);
-                if f < best_f {
-                    best_f = f;
-                    best = cand;
-                }
+            let cand = [fixed, l1];
+            let f = obj(cand);
+            if f < best_f {
+                best_f = f;
+                best = cand;
             }
             let l0 = min_1d(-d1, b + fixed * d2);
             let cand = [l0, fixed];

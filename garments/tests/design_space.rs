@@ -25,8 +25,11 @@ fn same(v: &V, x: &Value) -> bool {
     }
 }
 
+/// Path, type, range, default value and sampling probability of one parameter.
+type Row = (&'static str, &'static str, &'static [V], V, Option<f64>);
+
 #[rustfmt::skip]
-const REFERENCE: &[(&str, &str, &[V], V, Option<f64>)] = &[
+const REFERENCE: &[Row] = &[
     ("meta.upper", "select_null", &[S("FittedShirt"), S("Shirt"), N], N, Some(0.3)),
     ("meta.wb", "select_null", &[S("StraightWB"), S("FittedWB"), N], N, Some(0.5)),
     ("meta.bottom", "select_null", &[S("SkirtCircle"), S("AsymmSkirtCircle"), S("GodetSkirt"), S("Pants"), S("Skirt2"), S("SkirtManyPanels"), S("PencilSkirt"), S("SkirtLevels"), N], N, Some(0.3)),

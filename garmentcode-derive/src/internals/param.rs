@@ -59,6 +59,7 @@ pub struct Group {
 }
 
 /// A field of a parameter struct.
+#[allow(clippy::large_enum_variant)] // built once per field at compile time
 pub enum Field {
     /// A parameter.
     Leaf(Box<Leaf>),

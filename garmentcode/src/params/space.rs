@@ -245,7 +245,7 @@ fn read_spec(path: &str, node: &Node, base: &ParamSpec) -> Result<ParamSpec, Str
                     let mut opts = Vec::new();
                     for it in items {
                         let v = from_node(it).ok_or("options must be names, numbers, booleans or null")?;
-                        if !allowed.iter().any(|a| a.loosely_eq(&v)) && !(v == Value::Null && kind == Kind::SelectNull) {
+                        if !allowed.iter().any(|a| a.loosely_eq(&v)) && (v != Value::Null || kind != Kind::SelectNull) {
                             return Err(format!("option {v} is not supported (known options: {})", base.range));
                         }
                         opts.push(v);

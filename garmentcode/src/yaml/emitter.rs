@@ -201,6 +201,8 @@ impl Emitter {
         match k {
             Value::Seq(items) => items.is_empty(),
             Value::Map(pairs) => pairs.is_empty(),
+            Value::Str(s) if s.len() < 100 && is_simple_plain(s) => true,
+            Value::Null | Value::Bool(_) | Value::Int(_) | Value::Float(_) => true,
             _ => {
                 let text = scalar_text(k);
                 let a = analyze(&text);
@@ -216,6 +218,34 @@ impl Emitter {
     }
 
     fn process_scalar(&mut self, v: &Value, ctx: Ctx) {
+        // Fast path for what design files are made of (numbers, `null`,
+        // booleans, identifier-like strings on short lines): PyYAML's analysis
+        // would choose plain style and its writer would not fold the line.
+        if self.flow_level == 0 {
+            let simple = match v {
+                Value::Str(s) => is_simple_plain(s) && self.column + 1 + s.len() <= BEST_WIDTH && plain_is_str(s),
+                Value::Seq(_) | Value::Map(_) => false,
+                _ => true,
+            };
+            if simple {
+                let text: std::borrow::Cow<str> = match v {
+                    Value::Str(s) => std::borrow::Cow::Borrowed(s.as_str()),
+                    other => std::borrow::Cow::Owned(scalar_text(other)),
+                };
+                if ctx.root {
+                    self.open_ended = true;
+                }
+                if !self.whitespace {
+                    self.out.push(' ');
+                    self.column += 1;
+                }
+                self.out.push_str(&text);
+                self.column += text.len();
+                self.whitespace = false;
+                self.indention = false;
+                return;
+            }
+        }
         let text = scalar_text(v);
         let implicit = match v {
             Value::Str(s) => plain_is_str(s),
@@ -252,7 +282,7 @@ impl Emitter {
     }
 
     fn write_indicator(&mut self, indicator: &str, need_whitespace: bool, whitespace: bool, indention: bool) {
-        if !(self.whitespace || !need_whitespace) {
+        if !self.whitespace && need_whitespace {
             self.out.push(' ');
             self.column += 1;
         }
@@ -471,6 +501,36 @@ impl Emitter {
         }
         self.write_indicator("\"", false, false, false);
     }
+}
+
+/// A string PyYAML writes plain without any analysis subtleties: starts with
+/// a letter, digit or `_`, then letters, digits and `_-./+` or single spaces,
+/// not ending with a space. (Whether it would read back as a string is checked
+/// separately.)
+fn is_simple_plain(s: &str) -> bool {
+    let b = s.as_bytes();
+    match b.first() {
+        Some(c) if c.is_ascii_alphanumeric() || *c == b'_' => {}
+        _ => return false,
+    }
+    if b[b.len() - 1] == b' ' {
+        return false;
+    }
+    let mut prev_space = false;
+    for &c in &b[1..] {
+        let ok = c.is_ascii_alphanumeric() || matches!(c, b'_' | b'-' | b'.' | b'/' | b'+');
+        if c == b' ' {
+            if prev_space {
+                return false;
+            }
+            prev_space = true;
+        } else if ok {
+            prev_space = false;
+        } else {
+            return false;
+        }
+    }
+    true
 }
 
 /// The scalar's text as PyYAML's representer writes it.

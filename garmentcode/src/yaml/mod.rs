@@ -13,6 +13,11 @@
 //! integers outside `i64`, and duplicate mapping keys (PyYAML silently keeps the
 //! last one; we name both lines).
 //!
+//! Typical files take a line-oriented fast path (`fast.rs`) that handles
+//! `key: value` / `- item` blocks, comments, single-line quoted scalars and
+//! `[a, b]` lists; anything else (and every error) goes through the full
+//! PyYAML port. Both paths are checked against each other by the fuzz tests.
+//!
 //! Writing ([`to_string`]) produces the same text as PyYAML
 //! `dump(data, default_flow_style=False, sort_keys=False)` (block style, 2-space
 //! indentation, sequences inside mappings not indented, quoting only where needed,
@@ -27,6 +32,7 @@
 //! ```
 
 mod emitter;
+mod fast;
 mod parser;
 mod resolve;
 mod scanner;
@@ -215,4 +221,21 @@ impl std::error::Error for YamlError {}
 /// are reported as such rather than misread.
 pub fn parse(text: &str) -> Result<Node, YamlError> {
     parser::parse(text)
+}
+
+/// Testing aids; not part of the stable API.
+#[doc(hidden)]
+pub mod testing {
+    use crate::yaml::{Node, YamlError};
+
+    /// Only the line-oriented fast path; `None` when it defers to the full parser.
+    pub fn parse_fast(text: &str) -> Option<Node> {
+        let clean = crate::yaml::scanner::check_characters(text).ok()?;
+        crate::yaml::fast::parse_fast(text, clean)
+    }
+
+    /// Only the full PyYAML-faithful parser.
+    pub fn parse_full(text: &str) -> Result<Node, YamlError> {
+        crate::yaml::parser::parse_full(text)
+    }
 }

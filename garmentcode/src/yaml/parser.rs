@@ -11,8 +11,18 @@ use crate::yaml::scanner::{check_characters, short_quote, Kind, Mark, Scanner, S
 use crate::yaml::{Node, Value, YamlError};
 
 pub(crate) fn parse(text: &str) -> Result<Node, YamlError> {
+    let clean = check_characters(text)?;
+    if let Some(node) = crate::yaml::fast::parse_fast(text, clean) {
+        return Ok(node);
+    }
+    parse_full(text)
+}
+
+/// The PyYAML-faithful parser alone (no fast path); also used by tests to
+/// check that both paths agree.
+pub(crate) fn parse_full(text: &str) -> Result<Node, YamlError> {
     check_characters(text)?;
-    let mut p = Parser { s: Scanner::new(text), depth: 0, block_cols: Vec::new() };
+    let mut p = Parser { s: Scanner::new(text), depth: 0, block_cols: Vec::new(), last_closed_col: None };
     p.parse_stream()
 }
 
@@ -21,6 +31,8 @@ struct Parser<'a> {
     depth: usize,
     /// Columns (0-based) and kinds of the open block collections, for indentation messages.
     block_cols: Vec<(u32, bool)>,
+    /// Column of the block collection that ended last (the "nested block above").
+    last_closed_col: Option<u32>,
 }
 
 fn node_at(value: Value, m: Mark) -> Node {
@@ -203,6 +215,7 @@ impl<'a> Parser<'a> {
         }
         self.s.next_token()?;
         self.block_cols.pop();
+        self.last_closed_col = Some(open.col);
         Ok(node_at(Value::Seq(items), open))
     }
 
@@ -255,6 +268,7 @@ impl<'a> Parser<'a> {
         }
         self.s.next_token()?;
         self.block_cols.pop();
+        self.last_closed_col = Some(open.col);
         Ok(node_at(Value::Map(pairs), open))
     }
 
@@ -486,20 +500,13 @@ impl<'a> Parser<'a> {
         let msg = match kind {
             Kind::BlockMapStart | Kind::BlockSeqStart => {
                 // A line indented deeper than its siblings but not nested under anything.
-                let enclosing: Vec<String> =
-                    self.block_cols.iter().rev().take(3).map(|(c, _)| (c + 1).to_string()).collect();
-                format!(
-                    "bad indentation: {} at column {} is indented more than the {} it belongs to (which starts at column {}{}); align it with its siblings",
-                    what,
-                    m.col + 1,
-                    coll,
-                    open.col + 1,
-                    if enclosing.len() > 1 {
-                        format!("; enclosing collections start at columns {}", enclosing.join(", "))
-                    } else {
-                        String::new()
-                    }
-                )
+                let mut expected = format!("column {}", open.col + 1);
+                if let Some(c) = self.last_closed_col.filter(|&c| c > open.col && c != m.col) {
+                    expected.push_str(&format!(" (like the {} started at line {}), or column {} (to continue the nested block above)", coll, open.line + 1, c + 1));
+                } else {
+                    expected.push_str(&format!(" (like the {} started at line {})", coll, open.line + 1));
+                }
+                format!("bad indentation: {} is at column {}, expected {}", what, m.col + 1, expected)
             }
             Kind::Key if !is_map => format!(
                 "{} at the indentation of the sequence started at line {}, column {}: inside a sequence every line at this column must start with '- '",
@@ -554,7 +561,7 @@ impl<'a> Parser<'a> {
 
 /// Python dict key equality for scalars: numbers compare by value across
 /// bool/int/float, NaN keys are all the same object in PyYAML (so equal).
-fn keys_equal(a: &Value, b: &Value) -> bool {
+pub(crate) fn keys_equal(a: &Value, b: &Value) -> bool {
     fn num(v: &Value) -> Option<Num> {
         match *v {
             Value::Bool(b) => Some(Num::I(b as i64)),
@@ -574,15 +581,17 @@ fn keys_equal(a: &Value, b: &Value) -> bool {
             (Some(Num::I(x)), Some(Num::I(y))) => x == y,
             (Some(Num::F(x)), Some(Num::F(y))) => x == y || (x.is_nan() && y.is_nan()),
             (Some(Num::I(i)), Some(Num::F(f))) | (Some(Num::F(f)), Some(Num::I(i))) => {
-                // Exact comparison, as Python does (no rounding of large ints).
-                f.fract() == 0.0 && f >= -9.223372036854775808e18 && f < 9.223372036854775808e18 && f as i64 == i
+                // Exact comparison, as Python does (no rounding of large ints):
+                // only integral floats in i64's range [-2^63, 2^63) can be equal.
+                const TWO_63: f64 = 9_223_372_036_854_775_808.0;
+                f.fract() == 0.0 && (-TWO_63..TWO_63).contains(&f) && f as i64 == i
             }
             _ => false,
         },
     }
 }
 
-fn find_duplicate<'p>(pairs: &'p [(Node, Node)], key: &Node) -> Option<&'p (Node, Node)> {
+pub(crate) fn find_duplicate<'p>(pairs: &'p [(Node, Node)], key: &Node) -> Option<&'p (Node, Node)> {
     if let Value::Str(s) = &key.value {
         // Fast path for the usual string keys.
         return pairs.iter().find(|(k, _)| matches!(&k.value, Value::Str(t) if t == s));

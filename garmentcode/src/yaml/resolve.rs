@@ -278,6 +278,13 @@ fn radix(d: &[u8], base: u32) -> Option<u128> {
 
 /// `construct_yaml_float`.
 fn construct_float(s: &str, sexagesimal: bool) -> Resolved {
+    // Common case (`0.5`, `-1.25e+3`): Rust's parser reads exactly what
+    // Python's `float()` reads once `_` is gone; `.inf`/`.nan` need the slow path.
+    if !sexagesimal && !s.contains(['_', 'i', 'I', 'n', 'N']) {
+        if let Ok(f) = s.parse::<f64>() {
+            return Resolved::Float(f);
+        }
+    }
     let mut buf = [0u8; 64];
     let mut owned: Vec<u8> = Vec::new();
     let cleaned: &[u8] = if s.len() <= buf.len() {

@@ -182,6 +182,9 @@ pub(crate) struct Scanner<'a> {
     done: bool,
     /// Marks of the currently open `[` / `{`, for "unclosed" messages.
     open_flows: Vec<(u8, Mark)>,
+    /// Start and end byte of the plain scalar fetched last, if it was the last
+    /// token fetched (to explain a following ':' error).
+    prev_plain: Option<(Mark, usize)>,
 }
 
 /// `\0` (end of input), space, tab or line break: what may follow an indicator.
@@ -235,6 +238,7 @@ impl<'a> Scanner<'a> {
             active_keys: 0,
             done: false,
             open_flows: Vec::new(),
+            prev_plain: None,
         }
     }
 
@@ -370,6 +374,7 @@ impl<'a> Scanner<'a> {
     }
 
     fn fetch_more_tokens(&mut self) -> Result<(), YamlError> {
+        let prev_plain = self.prev_plain.take();
         self.scan_to_next_token();
         self.stale_possible_simple_keys()?;
         let col = self.column();
@@ -393,7 +398,7 @@ impl<'a> Scanner<'a> {
                     "explicit mapping keys ('? key') are not supported; write 'key: value'".into(),
                 );
             }
-            b':' if self.flow_level > 0 || is_blankz(self.peek(1)) => return self.fetch_value(),
+            b':' if self.flow_level > 0 || is_blankz(self.peek(1)) => return self.fetch_value(prev_plain),
             b'*' => return self.err("aliases ('*name') are not supported".into()),
             b'&' => return self.err("anchors ('&name') are not supported".into()),
             b'!' => return self.err("tags ('!tag', '!!type') are not supported; quote the value to make it a string".into()),
@@ -513,6 +518,47 @@ impl<'a> Scanner<'a> {
             }
         };
         self.error_at(at, message)
+    }
+
+    /// Explains a ':' that has no key before it. The usual causes: a plain value
+    /// containing ': ', a line indented so deep that it continues the previous
+    /// value, or a missing closing bracket.
+    fn no_key_error(&mut self, prev_plain: Option<(Mark, usize)>) -> YamlError {
+        let m = self.mark();
+        if let Some((b, om)) = self.innermost_open_flow() {
+            return self.error_at(
+                m,
+                format!(
+                    "unexpected ':' inside the '{}' opened at line {}, column {}; is the closing '{}' missing?",
+                    b as char,
+                    om.line + 1,
+                    om.col + 1,
+                    if b == b'[' { ']' } else { '}' }
+                ),
+            );
+        }
+        if let Some((start, end)) = prev_plain.filter(|(st, _)| st.line < self.line) {
+            // Show the value's first line only.
+            let raw = self.text.get(start.pos..end).unwrap_or("");
+            let first = raw.split(['\n', '\r']).next().unwrap_or("");
+            return self.error_at(
+                m,
+                format!(
+                    "mapping values are not allowed here: this line continues the plain value {} started at line {}, column {} (a line indented deeper than its mapping's keys continues the value above); check the indentation, or whether line {} is missing a ':'",
+                    short_quote(first),
+                    start.line + 1,
+                    start.col + 1,
+                    start.line + 1
+                ),
+            );
+        }
+        if self.flow_level == 0 && !self.allow_simple_key {
+            return self.error_at(
+                m,
+                "mapping values are not allowed here (a plain value cannot contain ': '; quote the value, or put the nested mapping on its own line)".into(),
+            );
+        }
+        self.error_at(m, "found ':' without a mapping key before it".into())
     }
 
     // ----- indentation -------------------------------------------------------
@@ -641,7 +687,7 @@ impl<'a> Scanner<'a> {
         Ok(())
     }
 
-    fn fetch_value(&mut self) -> Result<(), YamlError> {
+    fn fetch_value(&mut self, prev_plain: Option<(Mark, usize)>) -> Result<(), YamlError> {
         if let Some(key) = self.possible_keys[self.flow_level].take() {
             self.active_keys -= 1;
             let idx = key.token_number - self.tokens_taken;
@@ -653,13 +699,7 @@ impl<'a> Scanner<'a> {
         } else {
             // A ':' with no key before it on the same line. PyYAML either fails
             // here or (without '?' keys, which we do not support) in its parser.
-            if self.flow_level == 0 && !self.allow_simple_key {
-                return self.err(
-                    "mapping values are not allowed here (a plain value cannot contain ': '; quote the value, or put the nested mapping on its own line)"
-                        .into(),
-                );
-            }
-            return self.err("found ':' without a mapping key before it".into());
+            return Err(self.no_key_error(prev_plain));
         }
         let start = self.mark();
         self.pos += 1;
@@ -680,6 +720,7 @@ impl<'a> Scanner<'a> {
         self.save_possible_simple_key()?;
         self.allow_simple_key = false;
         let tok = self.scan_plain();
+        self.prev_plain = Some((tok.start, tok.end.pos));
         self.tokens.push_back(tok);
         Ok(())
     }
@@ -1035,22 +1076,24 @@ pub(crate) fn short_quote(s: &str) -> String {
 
 /// Checks the characters PyYAML's reader accepts (printable ones, tab and line
 /// breaks). The Unicode line breaks NEL/LS/PS, which PyYAML treats as line
-/// breaks, are refused as unsupported. Fast path: ASCII checked 32 bytes at a time.
-pub(crate) fn check_characters(text: &str) -> Result<(), YamlError> {
+/// breaks, are refused as unsupported.
+///
+/// Returns `true` when the text is "clean": only printable ASCII and `\n`
+/// (no tabs, no `\r`, no non-ASCII), which lets the fast path skip per-line
+/// checks. The clean test is written so that the compiler vectorizes it.
+pub(crate) fn check_characters(text: &str) -> Result<bool, YamlError> {
     let bytes = text.as_bytes();
-    let mut i = 0;
-    while i + 32 <= bytes.len() {
-        let chunk = &bytes[i..i + 32];
-        let mut bad = false;
-        for &b in chunk {
-            bad |= !(b.wrapping_sub(0x20) < 0x5F || b == b'\n' || b == b'\r' || b == b'\t');
-        }
-        if bad {
-            check_slow(text, i, i + 32)?;
-        }
-        i += 32;
+    // A plain reduction over contiguous bytes, which LLVM turns into SIMD.
+    let mut bad = 0u8;
+    for &b in bytes {
+        bad |= (((b < 0x20) & (b != b'\n')) | (b >= 0x7F)) as u8;
     }
-    check_slow(text, i, bytes.len())
+    let clean = bad == 0;
+    if clean {
+        return Ok(true);
+    }
+    check_slow(text, 0, bytes.len())?;
+    Ok(false)
 }
 
 fn check_slow(text: &str, from: usize, to: usize) -> Result<(), YamlError> {
@@ -1119,11 +1162,9 @@ pub(crate) fn line_col(text: &str, pos: usize) -> (u32, u32) {
                 line += 1;
                 start = i + 1;
             }
-            b'\r' => {
-                if bytes.get(i + 1) != Some(&b'\n') {
-                    line += 1;
-                    start = i + 1;
-                }
+            b'\r' if bytes.get(i + 1) != Some(&b'\n') => {
+                line += 1;
+                start = i + 1;
             }
             _ => {}
         }
