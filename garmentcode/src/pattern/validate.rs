@@ -227,12 +227,11 @@ pub fn validate(p: &Pattern) -> Vec<Problem> {
                     stitch: Some(si),
                     ratio: Some(ratio),
                     message: format!(
-                        "{:.2} cm stitched to {:.2} cm ({}:{}), ratio {ratio:.3}{}",
+                        "{:.2} cm stitched to {:.2} cm ({}:{}), ratio {ratio:.3} (a gather, or a mistake)",
                         l1,
                         l2,
                         s.sides[1].panel,
                         s.sides[1].edge,
-                        if ratio > 1.0 { " (gathered)" } else { "" }
                     ),
                 });
             }
