@@ -31,6 +31,14 @@ COMMANDS:
         different lengths). Exit 1 on errors (with --strict also on warnings).
     render SPEC.json --out DIR [--no-png]
         Re-emit DIR/specification.json and draw DIR/pattern.svg and DIR/pattern.png.
+    compare EXPECTED.json ACTUAL.json [--tol CM] [--strict] [--verbose]
+    compare --cases EXPECTED_DIR ACTUAL_DIR [--tol CM] [--strict] [--verbose]
+        Judge whether two patterns are the same garment by geometry (outlines,
+        placement, perimeters and stitches within --tol, default 0.05 cm; vertex
+        order and JSON layout do not matter; sleeve, cuff and hood panels, which
+        the reference fits chaotically, are judged by how they sew). With --cases,
+        every case folder (specification.json or error.txt) of EXPECTED_DIR
+        against the same folder in ACTUAL_DIR. Exit 0 when all pass, else 1.
     help
         Show this text.
 ";
@@ -48,6 +56,7 @@ fn main() {
         "schema" => commands::schema::run(args),
         "check" => commands::check::run(args),
         "render" => commands::render::run(args),
+        "compare" => commands::compare::run(args),
         "help" | "--help" | "-h" => {
             print!("{HELP}");
             Ok(0)

@@ -6,7 +6,7 @@
 //! routines deliver; every length-based decision (subdivision by length, matching
 //! fractions) therefore agrees with it.
 
-use crate::math::{Vec2, cabs};
+use crate::math::{Vec2, cabs, norm};
 
 /// A quadratic or cubic Bézier curve given by its absolute control points.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -131,13 +131,16 @@ impl Bezier {
         }
     }
 
+    /// 16-point Gauss–Legendre on `[a, b]`. The speed is a plain square root, not
+    /// `hypot`: the quadrature is far less exact than the last bit, and this is the
+    /// hot loop of every length computation.
     fn gl16(&self, a: f64, b: f64) -> f64 {
         let half = 0.5 * (b - a);
         let mid = 0.5 * (a + b);
         let mut s = 0.0;
         for i in 0..8 {
             let dx = half * GL16_X[i];
-            s += GL16_W[i] * (cabs(self.derivative(mid - dx)) + cabs(self.derivative(mid + dx)));
+            s += GL16_W[i] * (norm(self.derivative(mid - dx)) + norm(self.derivative(mid + dx)));
         }
         s * half
     }
@@ -188,7 +191,7 @@ impl Bezier {
             } else {
                 hi = t;
             }
-            let speed = cabs(self.derivative(t));
+            let speed = norm(self.derivative(t));
             let newton = t - f / speed;
             t = if speed > 0.0 && newton > lo && newton < hi {
                 newton

@@ -21,6 +21,7 @@ pub mod arc;
 pub mod arena;
 pub mod bezier;
 pub mod body;
+pub mod compare;
 pub mod component;
 pub mod curves;
 pub mod draw;
