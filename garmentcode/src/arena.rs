@@ -236,9 +236,10 @@ impl Arena {
 
     /// Straight edges through the interior linearisation points of an edge, reusing
     /// its end vertices (used by bounding boxes and centres, as in the reference).
-    pub(crate) fn linearized_points(&self, e: EdgeId, n: Option<usize>) -> Vec<Vec2> {
+    /// Appends them to `out`.
+    pub(crate) fn linearized_points_into(&self, e: EdgeId, n: Option<usize>, out: &mut Vec<Vec2>) {
         let g = self.geom(e);
-        g.linearize(n.unwrap_or_else(|| g.default_linearization()))
+        g.linearize_into(n.unwrap_or_else(|| g.default_linearization()), out);
     }
 
     /// Deep copy of edges: new edges and new vertices, with vertex sharing among the

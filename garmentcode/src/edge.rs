@@ -235,23 +235,24 @@ impl Edge {
     /// Interior points of the default-or-given linearisation: `n` points at equal
     /// parameter steps for lines and arcs, at equal arc-length steps for Béziers.
     pub fn linearize(&self, n: usize) -> Vec<Vec2> {
+        let mut out = Vec::with_capacity(n);
+        self.linearize_into(n, &mut out);
+        out
+    }
+
+    /// As [`Edge::linearize`], appending the points to `out`.
+    pub fn linearize_into(&self, n: usize, out: &mut Vec<Vec2>) {
         if n == 0 {
-            return Vec::new();
+            return;
         }
         match self.curve {
             Curve::Line | Curve::Arc { .. } => {
                 let seg = self.segment();
-                interior_params(n + 1).map(|t| seg.point(t)).collect()
+                out.extend(interior_params(n + 1).map(|t| seg.point(t)));
             }
             _ => {
                 let rel = self.relative_bezier().expect("Bézier edge");
-                let len = rel.length();
-                interior_params(n + 1)
-                    .map(|f| {
-                        let t = rel.inverse_length(f * len).unwrap_or(f);
-                        self.to_abs(rel.point(t))
-                    })
-                    .collect()
+                with_relative_linearization(self.curve, &rel, n, |pts| out.extend(pts.iter().map(|p| self.to_abs(*p))));
             }
         }
     }
@@ -340,6 +341,49 @@ impl Edge {
     pub fn rotated(&self, angle: f64) -> Edge {
         Edge { end: self.start + rotate2d(self.end - self.start, angle), ..*self }
     }
+}
+
+/// Equal-arc-length points of a Bézier shape in its relative frame, memoised per
+/// thread.
+///
+/// Why: bounding boxes, normals and placements linearise the same edges over and
+/// over while a garment is built (a panel's normal is estimated after every
+/// rotation and mirroring), and each point costs an inverse arc length, i.e. several
+/// adaptive quadratures. In the relative frame the points depend on the shape alone,
+/// not on where the end points are, so they are computed once per shape and
+/// mapped to absolute coordinates per call. The cache is keyed by the exact bits of
+/// the control points and holds the very values the computation gives, so results
+/// are identical with or without it.
+fn with_relative_linearization<R>(curve: Curve, rel: &Bezier, n: usize, f: impl FnOnce(&[Vec2]) -> R) -> R {
+    use std::cell::RefCell;
+    use std::collections::HashMap;
+    /// Shapes kept before the cache is emptied (a garment has a few dozen).
+    const CAPACITY: usize = 4096;
+    thread_local! {
+        static CACHE: RefCell<HashMap<(u64, u64, u64, u64, bool, usize), Vec<Vec2>>> = RefCell::new(HashMap::new());
+    }
+    let key = match curve {
+        Curve::Quadratic(c) => (c.x.to_bits(), c.y.to_bits(), 0, 0, false, n),
+        Curve::Cubic(c1, c2) => (c1.x.to_bits(), c1.y.to_bits(), c2.x.to_bits(), c2.y.to_bits(), true, n),
+        Curve::Line | Curve::Arc { .. } => unreachable!("only Bézier shapes are memoised"),
+    };
+    CACHE.with(|cache| {
+        let mut cache = cache.borrow_mut();
+        if !cache.contains_key(&key) {
+            if cache.len() >= CAPACITY {
+                cache.clear();
+            }
+            let len = rel.length();
+            let pts = interior_params(n + 1)
+                .map(|f| {
+                    let t = rel.inverse_length(f * len).unwrap_or(f);
+                    rel.point(t)
+                })
+                .collect();
+            cache.insert(key, pts);
+        }
+        f(&cache[&key])
+    })
 }
 
 #[cfg(test)]

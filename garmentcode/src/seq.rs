@@ -319,8 +319,7 @@ impl EdgeSeq {
             if last_id != Some(s) {
                 out.push(a.pos(s));
             }
-            let inner = a.linearized_points(e, n);
-            out.extend(inner.iter().copied());
+            a.linearized_points_into(e, n, &mut out);
             out.push(a.pos(t));
             last_id = Some(t);
         }
