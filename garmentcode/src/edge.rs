@@ -359,8 +359,10 @@ fn with_relative_linearization<R>(curve: Curve, rel: &Bezier, n: usize, f: impl 
     use std::collections::HashMap;
     /// Shapes kept before the cache is emptied (a garment has a few dozen).
     const CAPACITY: usize = 4096;
+    /// Control-point bits, cubic or not, number of points.
+    type Key = (u64, u64, u64, u64, bool, usize);
     thread_local! {
-        static CACHE: RefCell<HashMap<(u64, u64, u64, u64, bool, usize), Vec<Vec2>>> = RefCell::new(HashMap::new());
+        static CACHE: RefCell<HashMap<Key, Vec<Vec2>>> = RefCell::new(HashMap::new());
     }
     let key = match curve {
         Curve::Quadratic(c) => (c.x.to_bits(), c.y.to_bits(), 0, 0, false, n),
