@@ -71,8 +71,9 @@ fn walk(node: &Node, prefix: &str, space: &DesignSpace, values: &mut [(String, V
                 };
                 match spec.check(&value) {
                     Ok(checked) => {
-                        if let Some(slot) = values.iter_mut().find(|(p, _)| *p == path) {
-                            slot.1 = checked;
+                        // `values` lists the space's parameters in order.
+                        if let Some(i) = space.index_of(&path) {
+                            values[i].1 = checked;
                         }
                     }
                     Err(e) => problems.push(format!("{}: design.{path}: {e}", at(val))),
@@ -115,7 +116,19 @@ fn edit_distance(a: &str, b: &str) -> usize {
 }
 
 /// Read a design file into the typed parameter tree `D`.
+///
+/// Files in the usual layout take a fast path that reads the values straight into
+/// the design; every other file, and every file with a problem, goes through the
+/// full YAML reader and [`read_design_values`] (same result, and the errors).
 pub fn read_design<D: Params>(text: &str, file: &str, space: &DesignSpace) -> Result<D, DesignError> {
+    if let Some(d) = super::fast::read_design_fast(text, space) {
+        return Ok(d);
+    }
+    read_design_full(text, file, space)
+}
+
+/// [`read_design`] without the fast path.
+pub(super) fn read_design_full<D: Params>(text: &str, file: &str, space: &DesignSpace) -> Result<D, DesignError> {
     let values = read_design_values(text, file, space)?;
     from_values(&values, file)
 }

@@ -13,12 +13,29 @@
 //!   naming the file, parameter path, bad value and allowed range;
 //! - [`Sampler`]: the reference's sampling semantics on a named, seeded generator.
 
+mod fast;
 mod io;
 mod sample;
 mod space;
 
 pub use io::{DesignError, from_values, read_design, read_design_values, write_design, write_values};
 pub use sample::{Sampler, sample_rng};
+
+/// Testing aids; not part of the stable API.
+#[doc(hidden)]
+pub mod testing {
+    use super::{DesignError, DesignSpace, Params};
+
+    /// Only the fast path of [`super::read_design`]; `None` when it defers to the full reader.
+    pub fn read_design_fast<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
+        super::fast::read_design_fast(text, space)
+    }
+
+    /// Only the full reader behind [`super::read_design`].
+    pub fn read_design_full<D: Params>(text: &str, file: &str, space: &DesignSpace) -> Result<D, DesignError> {
+        super::io::read_design_full(text, file, space)
+    }
+}
 pub use space::DesignSpace;
 
 use std::fmt;

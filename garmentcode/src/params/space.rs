@@ -9,13 +9,32 @@ use std::collections::HashMap;
 #[derive(Clone, Debug, PartialEq)]
 pub struct DesignSpace {
     params: Vec<ParamSpec>,
-    index: HashMap<String, usize>,
+    /// Every parameter's path and every group's path (a proper prefix of some
+    /// parameter's path, at a dot), for lookups while reading design files.
+    index: HashMap<String, Entry>,
+}
+
+/// What a dotted path names.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Entry {
+    /// The parameter at this index.
+    Param(usize),
+    /// A group: some parameter lies below it.
+    Group,
 }
 
 impl DesignSpace {
     /// A space from parameter specs (in document order).
     pub fn new(params: Vec<ParamSpec>) -> DesignSpace {
-        let index = params.iter().enumerate().map(|(i, p)| (p.path.clone(), i)).collect();
+        let mut index = HashMap::with_capacity(params.len() * 2);
+        for (i, p) in params.iter().enumerate() {
+            index.insert(p.path.clone(), Entry::Param(i));
+        }
+        for p in &params {
+            for (dot, _) in p.path.match_indices('.') {
+                index.entry(p.path[..dot].to_string()).or_insert(Entry::Group);
+            }
+        }
         DesignSpace { params, index }
     }
 
@@ -26,13 +45,25 @@ impl DesignSpace {
 
     /// A parameter by dotted path.
     pub fn get(&self, path: &str) -> Option<&ParamSpec> {
-        self.index.get(path).map(|&i| &self.params[i])
+        self.index_of(path).map(|i| &self.params[i])
+    }
+
+    /// Index of the parameter at `path` in [`DesignSpace::params`].
+    pub(crate) fn index_of(&self, path: &str) -> Option<usize> {
+        match self.index.get(path) {
+            Some(Entry::Param(i)) => Some(*i),
+            _ => None,
+        }
+    }
+
+    /// What `path` names: a parameter (its index), a group, or nothing.
+    pub(crate) fn lookup(&self, path: &str) -> Option<Entry> {
+        self.index.get(path).copied()
     }
 
     /// Whether `prefix` is a group (some parameter lies below it).
     pub fn is_group(&self, prefix: &str) -> bool {
-        let p = format!("{prefix}.");
-        self.params.iter().any(|s| s.path.starts_with(&p))
+        self.params.iter().any(|s| s.path.len() > prefix.len() && s.path.starts_with(prefix) && s.path.as_bytes()[prefix.len()] == b'.')
     }
 
     /// Problems that make the space unusable for sampling (empty or reversed ranges,
@@ -127,9 +158,9 @@ impl DesignSpace {
                 let name = k.as_str().map(str::to_string).unwrap_or_else(|| format!("{:?}", k.value));
                 let path = super::join_path(&prefix, &name);
                 if v.get("v").is_some() {
-                    match base.index.get(&path) {
+                    match base.index_of(&path) {
                         None => problems.push(format!("{}: design.{path}: unknown parameter", at(k))),
-                        Some(&i) => match read_spec(&path, v, &base.params[i]) {
+                        Some(i) => match read_spec(&path, v, &base.params[i]) {
                             Ok(spec) => params[i] = spec,
                             Err(e) => problems.push(format!("{}: design.{path}: {e}", at(v))),
                         },

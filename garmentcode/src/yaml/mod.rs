@@ -40,6 +40,7 @@ mod scanner;
 use std::fmt;
 
 pub use emitter::to_string;
+pub(crate) use resolve::{Resolved, resolve_plain, resolves_to_value};
 
 /// A YAML value as PyYAML `safe_load` would build it (restricted to the types
 /// the supported subset can produce).

@@ -55,6 +55,19 @@ pub(crate) fn resolve_plain(s: &str) -> Resolved {
     }
 }
 
+/// Whether [`resolve_plain`] gives a value (null, boolean, number or string)
+/// rather than one of its error kinds, without converting decimal floats (the
+/// common case of a design file's ranges, which are only validated).
+pub(crate) fn resolves_to_value(s: &str) -> bool {
+    let b = s.as_bytes();
+    // A non-sexagesimal float always constructs (as a float, or as a string in
+    // theory), which is what `resolve_number` would find first.
+    if matches!(b.first(), Some(b'-' | b'+' | b'.' | b'0'..=b'9')) && match_float(b) == Some(false) {
+        return true;
+    }
+    matches!(resolve_plain(s), Resolved::Null | Resolved::Bool(_) | Resolved::Int(_) | Resolved::Float(_) | Resolved::Str)
+}
+
 /// True if PyYAML would read `s`, written plain, back as the same string
 /// (used by the writer to decide whether a string needs quotes).
 pub(crate) fn plain_is_str(s: &str) -> bool {
@@ -429,5 +442,21 @@ mod tests {
         assert_eq!(resolve_plain("2001-12-14 21:59:43.10 -5"), Resolved::Timestamp);
         assert_eq!(resolve_plain("yes"), Resolved::Bool(true));
         assert_eq!(resolve_plain("Off"), Resolved::Bool(false));
+    }
+
+    #[test]
+    fn resolves_to_value_matches_resolve_plain() {
+        let words = [
+            "", "~", "null", "x", "1", "-1", "+1", "1.", ".5", "-.5", "+.5", "1.0e+3", "1.0e3", "1e3", "1_0.5", "1:30", "1:30.5",
+            "99999999999999999999:0.5", "9223372036854775808", "0x_", "0b_", "0x1F", "0777", "08", "2001-12-14", "<<", "=", ".inf",
+            "-.inf", ".nan", ".NaN", "yes", "Off", "0.5", "-0.25", "1__", "._5", "1:60.5", "0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0.5",
+        ];
+        for w in words {
+            let expected = matches!(
+                resolve_plain(w),
+                Resolved::Null | Resolved::Bool(_) | Resolved::Int(_) | Resolved::Float(_) | Resolved::Str
+            );
+            assert_eq!(resolves_to_value(w), expected, "{w:?}");
+        }
     }
 }
