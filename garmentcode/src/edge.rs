@@ -195,9 +195,10 @@ impl Edge {
             Curve::Line => (self.start + self.end) / 2.0,
             Curve::Arc { cy } => arc::midpoint(self.start, self.end, cy),
             _ => {
-                let seg = self.segment();
-                let t = seg.inverse_length(seg.length() / 2.0).unwrap_or(0.5);
-                seg.point(t)
+                let Segment::Bezier(b) = self.segment() else { unreachable!("Bézier edge") };
+                let total = b.length();
+                let t = b.inverse_length_given_total(total / 2.0, total).unwrap_or(0.5);
+                b.point(t)
             }
         }
     }
@@ -245,16 +246,44 @@ impl Edge {
         if n == 0 {
             return;
         }
+        let bits = |v: Vec2| [v.x.to_bits(), v.y.to_bits()];
         match self.curve {
-            Curve::Line | Curve::Arc { .. } => {
+            Curve::Line => {
                 let seg = self.segment();
                 out.extend(interior_params(n + 1).map(|t| seg.point(t)));
             }
-            _ => {
-                let rel = self.relative_bezier().expect("Bézier edge");
-                with_relative_linearization(self.curve, &rel, n, |pts| out.extend(pts.iter().map(|p| self.to_abs(*p))));
+            Curve::Arc { cy } => {
+                let [sx, sy] = bits(self.start);
+                let [ex, ey] = bits(self.end);
+                let key = ([sx, sy, ex, ey, cy.to_bits(), 0], b'A', n);
+                let make = || {
+                    let seg = self.segment();
+                    interior_params(n + 1).map(|t| seg.point(t)).collect()
+                };
+                linearization_cache::with(key, make, |pts| out.extend_from_slice(pts));
+            }
+            Curve::Quadratic(c) => self.linearize_bezier(([bits(c)[0], bits(c)[1], 0, 0, 0, 0], b'Q', n), out),
+            Curve::Cubic(c1, c2) => {
+                let ([a, b], [c, d]) = (bits(c1), bits(c2));
+                self.linearize_bezier(([a, b, c, d, 0, 0], b'C', n), out);
             }
         }
+    }
+
+    /// Equal-arc-length points of a Bézier edge, from the memoised points of its
+    /// relative shape.
+    fn linearize_bezier(&self, key: linearization_cache::Key, out: &mut Vec<Vec2>) {
+        let rel = self.relative_bezier().expect("Bézier edge");
+        let make = || {
+            let len = rel.length();
+            interior_params(key.2 + 1)
+                .map(|f| {
+                    let t = rel.inverse_length_given_total(f * len, len).unwrap_or(f);
+                    rel.point(t)
+                })
+                .collect()
+        };
+        linearization_cache::with(key, make, |pts| out.extend(pts.iter().map(|p| self.to_abs(*p))));
     }
 
     /// Default number of interior linearisation points (0 for lines, 9 for curves).
@@ -311,7 +340,7 @@ impl Edge {
                         let next_t = if (covered - 1.0).abs() < 1e-15 {
                             1.0
                         } else {
-                            b.inverse_length((total * covered).min(total)).unwrap_or(1.0)
+                            b.inverse_length_given_total((total * covered).min(total), total).unwrap_or(1.0)
                         };
                         let p = b.crop(prev_t, next_t);
                         prev_t = next_t;
@@ -343,50 +372,73 @@ impl Edge {
     }
 }
 
-/// Equal-arc-length points of a Bézier shape in its relative frame, memoised per
-/// thread.
+/// Linearisations memoised per thread: the equal-arc-length points of Bézier
+/// shapes in their relative frame, and the points of arcs.
 ///
 /// Why: bounding boxes, normals and placements linearise the same edges over and
 /// over while a garment is built (a panel's normal is estimated after every
-/// rotation and mirroring), and each point costs an inverse arc length, i.e. several
-/// adaptive quadratures. In the relative frame the points depend on the shape alone,
-/// not on where the end points are, so they are computed once per shape and
-/// mapped to absolute coordinates per call. The cache is keyed by the exact bits of
-/// the control points and holds the very values the computation gives, so results
-/// are identical with or without it.
-fn with_relative_linearization<R>(curve: Curve, rel: &Bezier, n: usize, f: impl FnOnce(&[Vec2]) -> R) -> R {
+/// rotation and mirroring, on unchanged panel-local geometry). Each Bézier point
+/// costs an inverse arc length (several adaptive quadratures), each arc a few
+/// transcendental functions. In the relative frame a Bézier's points depend on its
+/// shape alone, not on where the end points are, so they are computed once per
+/// shape and mapped to absolute coordinates per call; an arc's points are kept per
+/// exact geometry. Keys are the exact bits of the inputs and values are what the
+/// computation gives, so results are identical with or without the cache.
+/// [`crate::Arena::clear`] empties it, so it never outlives a garment.
+mod linearization_cache {
+    use super::Vec2;
     use std::cell::RefCell;
     use std::collections::HashMap;
-    /// Shapes kept before the cache is emptied (a garment has a few dozen).
-    const CAPACITY: usize = 4096;
-    /// Control-point bits, cubic or not, number of points.
-    type Key = (u64, u64, u64, u64, bool, usize);
-    thread_local! {
-        static CACHE: RefCell<HashMap<Key, Vec<Vec2>>> = RefCell::new(HashMap::new());
-    }
-    let key = match curve {
-        Curve::Quadratic(c) => (c.x.to_bits(), c.y.to_bits(), 0, 0, false, n),
-        Curve::Cubic(c1, c2) => (c1.x.to_bits(), c1.y.to_bits(), c2.x.to_bits(), c2.y.to_bits(), true, n),
-        Curve::Line | Curve::Arc { .. } => unreachable!("only Bézier shapes are memoised"),
-    };
-    CACHE.with(|cache| {
-        let mut cache = cache.borrow_mut();
-        if !cache.contains_key(&key) {
-            if cache.len() >= CAPACITY {
-                cache.clear();
+    use std::hash::{BuildHasherDefault, Hasher};
+
+    /// Shape or geometry bits, kind, number of points.
+    pub(super) type Key = ([u64; 6], u8, usize);
+
+    /// Multiply-rotate hashing of the key words (the keys are few and not
+    /// adversarial; SipHash cost more than the lookups saved).
+    #[derive(Default)]
+    struct WordHasher(u64);
+
+    impl Hasher for WordHasher {
+        fn write(&mut self, bytes: &[u8]) {
+            for &b in bytes {
+                self.write_u64(u64::from(b));
             }
-            let len = rel.length();
-            let pts = interior_params(n + 1)
-                .map(|f| {
-                    let t = rel.inverse_length(f * len).unwrap_or(f);
-                    rel.point(t)
-                })
-                .collect();
-            cache.insert(key, pts);
         }
-        f(&cache[&key])
-    })
+        fn write_u64(&mut self, x: u64) {
+            self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+        }
+        fn write_u8(&mut self, x: u8) {
+            self.write_u64(u64::from(x));
+        }
+        fn write_usize(&mut self, x: usize) {
+            self.write_u64(x as u64);
+        }
+        fn finish(&self) -> u64 {
+            self.0
+        }
+    }
+
+    thread_local! {
+        static CACHE: RefCell<HashMap<Key, Vec<Vec2>, BuildHasherDefault<WordHasher>>> = RefCell::default();
+    }
+
+    /// Calls `f` with the memoised points for `key`, computing them with `make` once.
+    pub(super) fn with<R>(key: Key, make: impl FnOnce() -> Vec<Vec2>, f: impl FnOnce(&[Vec2]) -> R) -> R {
+        CACHE.with(|cache| {
+            let mut cache = cache.borrow_mut();
+            let pts = cache.entry(key).or_insert_with(make);
+            f(pts)
+        })
+    }
+
+    /// Forget every entry.
+    pub(crate) fn clear() {
+        CACHE.with(|cache| cache.borrow_mut().clear());
+    }
 }
+
+pub(crate) use linearization_cache::clear as clear_linearization_cache;
 
 #[cfg(test)]
 mod tests {
