@@ -45,12 +45,11 @@ pub fn has_self_intersection(segs: &[Seg]) -> bool {
 fn edge_segments(e: &Edge, out: &mut Vec<Seg>) {
     match e.curve {
         Curve::Arc { .. } => {
-            let mut pts = vec![e.start];
-            pts.extend(e.linearize(10));
+            let mut pts = Vec::with_capacity(12);
+            pts.push(e.start);
+            e.linearize_into(10, &mut pts);
             pts.push(e.end);
-            for w in pts.windows(2) {
-                out.push(Seg::Line([p(w[0]), p(w[1])]));
-            }
+            out.extend(pts.windows(2).map(|w| Seg::Line([p(w[0]), p(w[1])])));
         }
         _ => out.push(to_seg(&e.segment())),
     }
@@ -58,7 +57,7 @@ fn edge_segments(e: &Edge, out: &mut Vec<Seg>) {
 
 /// Outline segments of a panel for the self-intersection check.
 pub fn panel_segments(a: &Arena, panel: PanelId) -> Vec<Seg> {
-    let mut out = Vec::new();
+    let mut out = Vec::with_capacity(panel.edges(a).len() + 32);
     for &e in panel.edges(a).iter() {
         edge_segments(&a.geom(e), &mut out);
     }

@@ -146,8 +146,14 @@ pub fn try_intersect_as(
 
 /// [`has_self_intersection`] returning the reference's exceptions as errors.
 pub fn try_has_self_intersection(segs: &[Seg]) -> Result<bool, IntersectError> {
+    // The control-point box reject that starts every `intersect` call, with each
+    // segment's box computed once instead of once per pair (most pairs stop there).
+    let boxes: Vec<ControlBox> = segs.iter().map(|s| ControlBox::of(s.points())).collect();
     for i1 in 0..segs.len() {
         for i2 in i1 + 1..segs.len() {
+            if !boxes[i1].may_meet(&boxes[i2]) {
+                continue;
+            }
             let hits = try_intersect(&segs[i1], &segs[i2])?;
             let real_hit = hits.iter().any(|&(t1, t2)| {
                 let (lo, hi) = if t2 < t1 { (t2, t1) } else { (t1, t2) };
@@ -183,14 +189,28 @@ fn min_max(v: impl Iterator<Item = f64>) -> (f64, f64) {
 
 /// The quick reject at the top of svgpathtools' `intersect` methods.
 fn control_boxes_may_meet(s: &[P], o: &[P]) -> bool {
-    for k in 0..2 {
-        let (omin, omax) = min_max(o.iter().map(|p| p[k]));
-        let (smin, smax) = min_max(s.iter().map(|p| p[k]));
-        if omin > smax || omax < smin {
-            return false;
-        }
+    ControlBox::of(s).may_meet(&ControlBox::of(o))
+}
+
+/// Per-axis extremes of a segment's control points.
+struct ControlBox([(f64, f64); 2]);
+
+impl ControlBox {
+    fn of(points: &[P]) -> ControlBox {
+        ControlBox([min_max(points.iter().map(|p| p[0])), min_max(points.iter().map(|p| p[1]))])
     }
-    true
+
+    /// False when the boxes are apart on some axis (touching boxes may meet).
+    fn may_meet(&self, other: &ControlBox) -> bool {
+        for k in 0..2 {
+            let (omin, omax) = other.0[k];
+            let (smin, smax) = self.0[k];
+            if omin > smax || omax < smin {
+                return false;
+            }
+        }
+        true
+    }
 }
 
 // ---------------------------------------------------------------------------
