@@ -232,9 +232,16 @@ struct Writer {
 
 impl Writer {
     fn newline(&mut self) {
-        self.out.push('\n');
-        for _ in 0..self.depth {
-            self.out.push_str("  ");
+        /// A newline and the indentation of the deepest level written (one copy).
+        const INDENT: &str = "\n                                        ";
+        match INDENT.get(..1 + 2 * self.depth) {
+            Some(s) => self.out.push_str(s),
+            None => {
+                self.out.push('\n');
+                for _ in 0..self.depth {
+                    self.out.push_str("  ");
+                }
+            }
         }
     }
     fn open(&mut self, c: char) {
@@ -382,7 +389,16 @@ pub(crate) fn write_python_float(out: &mut String, x: f64) {
         return;
     }
     let mut buf = zmij::Buffer::new();
-    let text = buf.format_finite(x).as_bytes();
+    let formatted = buf.format_finite(x);
+    let text = formatted.as_bytes();
+    let unsigned = text.strip_prefix(b"-").unwrap_or(text);
+    // zmij writes decimal exponents -5..=15 positionally, exactly as Python does
+    // from -4 on ("0.00012", "12.5", "1000000000000000.0"); only the others
+    // ("0.00001", "1e16") need laying out again.
+    if !unsigned.contains(&b'e') && !unsigned.starts_with(b"0.0000") {
+        out.push_str(formatted);
+        return;
+    }
     let (negative, text) = match text.split_first() {
         Some((b'-', rest)) => (true, rest),
         _ => (false, text),
