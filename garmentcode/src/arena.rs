@@ -67,7 +67,7 @@ impl Arena {
 
     /// Forget everything (keeping the allocations) to build another garment.
     pub fn clear(&mut self) {
-        crate::edge::clear_linearization_cache();
+        crate::memo::clear();
         self.verts.clear();
         self.edges.clear();
         self.panels.clear();

@@ -242,6 +242,14 @@ impl Edge {
     }
 
     /// As [`Edge::linearize`], appending the points to `out`.
+    ///
+    /// Memoised per garment (see `memo`): bounding boxes, normals and placements
+    /// linearise the same edges over and over while a garment is built. Each Bézier
+    /// point costs an inverse arc length (several adaptive quadratures), each arc
+    /// point a few transcendental functions. In the relative frame a Bézier's points
+    /// depend on its shape alone, not on where the end points are, so they are kept
+    /// per shape and mapped to absolute coordinates per call; an arc's points are
+    /// kept per exact geometry.
     pub fn linearize_into(&self, n: usize, out: &mut Vec<Vec2>) {
         if n == 0 {
             return;
@@ -260,7 +268,7 @@ impl Edge {
                     let seg = self.segment();
                     interior_params(n + 1).map(|t| seg.point(t)).collect()
                 };
-                linearization_cache::with(key, make, |pts| out.extend_from_slice(pts));
+                crate::memo::edge_points(key, make, |pts| out.extend_from_slice(pts));
             }
             Curve::Quadratic(c) => self.linearize_bezier(([bits(c)[0], bits(c)[1], 0, 0, 0, 0], b'Q', n), out),
             Curve::Cubic(c1, c2) => {
@@ -272,7 +280,7 @@ impl Edge {
 
     /// Equal-arc-length points of a Bézier edge, from the memoised points of its
     /// relative shape.
-    fn linearize_bezier(&self, key: linearization_cache::Key, out: &mut Vec<Vec2>) {
+    fn linearize_bezier(&self, key: crate::memo::EdgeKey, out: &mut Vec<Vec2>) {
         let rel = self.relative_bezier().expect("Bézier edge");
         let make = || {
             let len = rel.length();
@@ -283,7 +291,7 @@ impl Edge {
                 })
                 .collect()
         };
-        linearization_cache::with(key, make, |pts| out.extend(pts.iter().map(|p| self.to_abs(*p))));
+        crate::memo::edge_points(key, make, |pts| out.extend(pts.iter().map(|p| self.to_abs(*p))));
     }
 
     /// Default number of interior linearisation points (0 for lines, 9 for curves).
@@ -372,73 +380,6 @@ impl Edge {
     }
 }
 
-/// Linearisations memoised per thread: the equal-arc-length points of Bézier
-/// shapes in their relative frame, and the points of arcs.
-///
-/// Why: bounding boxes, normals and placements linearise the same edges over and
-/// over while a garment is built (a panel's normal is estimated after every
-/// rotation and mirroring, on unchanged panel-local geometry). Each Bézier point
-/// costs an inverse arc length (several adaptive quadratures), each arc a few
-/// transcendental functions. In the relative frame a Bézier's points depend on its
-/// shape alone, not on where the end points are, so they are computed once per
-/// shape and mapped to absolute coordinates per call; an arc's points are kept per
-/// exact geometry. Keys are the exact bits of the inputs and values are what the
-/// computation gives, so results are identical with or without the cache.
-/// [`crate::Arena::clear`] empties it, so it never outlives a garment.
-mod linearization_cache {
-    use super::Vec2;
-    use std::cell::RefCell;
-    use std::collections::HashMap;
-    use std::hash::{BuildHasherDefault, Hasher};
-
-    /// Shape or geometry bits, kind, number of points.
-    pub(super) type Key = ([u64; 6], u8, usize);
-
-    /// Multiply-rotate hashing of the key words (the keys are few and not
-    /// adversarial; SipHash cost more than the lookups saved).
-    #[derive(Default)]
-    struct WordHasher(u64);
-
-    impl Hasher for WordHasher {
-        fn write(&mut self, bytes: &[u8]) {
-            for &b in bytes {
-                self.write_u64(u64::from(b));
-            }
-        }
-        fn write_u64(&mut self, x: u64) {
-            self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
-        }
-        fn write_u8(&mut self, x: u8) {
-            self.write_u64(u64::from(x));
-        }
-        fn write_usize(&mut self, x: usize) {
-            self.write_u64(x as u64);
-        }
-        fn finish(&self) -> u64 {
-            self.0
-        }
-    }
-
-    thread_local! {
-        static CACHE: RefCell<HashMap<Key, Vec<Vec2>, BuildHasherDefault<WordHasher>>> = RefCell::default();
-    }
-
-    /// Calls `f` with the memoised points for `key`, computing them with `make` once.
-    pub(super) fn with<R>(key: Key, make: impl FnOnce() -> Vec<Vec2>, f: impl FnOnce(&[Vec2]) -> R) -> R {
-        CACHE.with(|cache| {
-            let mut cache = cache.borrow_mut();
-            let pts = cache.entry(key).or_insert_with(make);
-            f(pts)
-        })
-    }
-
-    /// Forget every entry.
-    pub(crate) fn clear() {
-        CACHE.with(|cache| cache.borrow_mut().clear());
-    }
-}
-
-pub(crate) use linearization_cache::clear as clear_linearization_cache;
 
 #[cfg(test)]
 mod tests {

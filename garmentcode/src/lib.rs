@@ -30,6 +30,7 @@ pub mod error;
 pub mod interface;
 pub mod intersect;
 pub mod math;
+mod memo;
 pub mod ops;
 pub mod panel;
 pub mod params;

@@ -1,0 +1,65 @@
+//! Per-thread memo tables of pure geometric computations that a garment program
+//! repeats many times on unchanged geometry, emptied by [`crate::Arena::clear`] so
+//! that nothing is carried from one garment to the next.
+//!
+//! Keys are the exact bits of every input the computation reads and values are
+//! what the computation gave, so results are identical with or without the memo.
+
+use crate::math::Vec2;
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
+
+/// Multiply-rotate hashing of integer keys (few, not adversarial; SipHash cost
+/// more than the lookups saved).
+#[derive(Default)]
+struct WordHasher(u64);
+
+impl Hasher for WordHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        for chunk in bytes.chunks(8) {
+            let mut w = [0u8; 8];
+            w[..chunk.len()].copy_from_slice(chunk);
+            self.write_u64(u64::from_le_bytes(w));
+        }
+    }
+    fn write_u64(&mut self, x: u64) {
+        self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+    fn write_u8(&mut self, x: u8) {
+        self.write_u64(u64::from(x));
+    }
+    fn write_u32(&mut self, x: u32) {
+        self.write_u64(u64::from(x));
+    }
+    fn write_usize(&mut self, x: usize) {
+        self.write_u64(x as u64);
+    }
+    fn finish(&self) -> u64 {
+        self.0
+    }
+}
+
+type Table<K> = RefCell<HashMap<K, Vec<Vec2>, BuildHasherDefault<WordHasher>>>;
+
+/// Key of one edge linearisation: shape or geometry bits, kind, number of points.
+pub(crate) type EdgeKey = ([u64; 6], u8, usize);
+
+thread_local! {
+    static EDGE_POINTS: Table<EdgeKey> = RefCell::default();
+}
+
+/// Calls `f` with the memoised linearisation points for `key`, computing them
+/// with `make` once.
+pub(crate) fn edge_points<R>(key: EdgeKey, make: impl FnOnce() -> Vec<Vec2>, f: impl FnOnce(&[Vec2]) -> R) -> R {
+    EDGE_POINTS.with(|cache| {
+        let mut cache = cache.borrow_mut();
+        let pts = cache.entry(key).or_insert_with(make);
+        f(pts)
+    })
+}
+
+/// Forget every entry (a new garment starts).
+pub(crate) fn clear() {
+    EDGE_POINTS.with(|c| c.borrow_mut().clear());
+}
