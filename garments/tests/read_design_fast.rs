@@ -1,12 +1,19 @@
-//! The fast path of `read_design` agrees with the full reader: it takes the
-//! project's design files and freshly written ones, and on mutated files it either
-//! defers (`None`) or returns exactly the full reader's design.
+//! The fast paths of `read_design` agree with the full reader: they take the
+//! project's design files and freshly written ones, and on mutated files they
+//! either defer (`None`) or return exactly the full reader's design.
 
+use garmentcode::params::testing::{read_design_fast, read_design_full, read_design_lines, read_design_skeleton};
+use garmentcode::params::{DesignSpace, Sampler, sample_rng, write_design};
 use garmentcode::Params;
-use garmentcode::params::testing::{read_design_fast, read_design_full};
-use garmentcode::params::{Sampler, sample_rng, write_design};
 use garments::Design;
 use std::path::Path;
+use std::sync::OnceLock;
+
+/// One space for all reads, so that its file layout is built and used.
+fn space() -> &'static DesignSpace {
+    static SPACE: OnceLock<DesignSpace> = OnceLock::new();
+    SPACE.get_or_init(Design::design_space)
+}
 
 /// Design files of the project: the reference cases, the built-in designs and
 /// written samples.
@@ -33,17 +40,33 @@ fn corpus() -> Vec<(String, String)> {
     out
 }
 
-/// The fast path either defers or agrees with the full reader.
-fn agree(text: &str, what: &str) -> bool {
-    let space = Design::design_space();
-    let full = read_design_full::<Design>(text, "f.yaml", &space);
-    match read_design_fast::<Design>(text, &space) {
-        None => false,
-        Some(fast) => {
-            assert_eq!(full.as_ref(), Ok(&fast), "fast path disagrees on {what}:\n{text}");
-            true
+/// Which fast paths took a file.
+#[derive(Clone, Copy, Default)]
+struct Taken {
+    lines: bool,
+    skeleton: bool,
+}
+
+/// Every fast path either defers or agrees with the full reader.
+fn agree(text: &str, what: &str) -> Taken {
+    let space = space();
+    let full = read_design_full::<Design>(text, "f.yaml", space);
+    let mut taken = Taken::default();
+    for (path, fast) in [
+        ("line", read_design_lines::<Design>(text, space)),
+        ("layout", read_design_skeleton::<Design>(text, space)),
+        ("combined", read_design_fast::<Design>(text, space)),
+    ] {
+        if let Some(fast) = fast {
+            assert_eq!(full.as_ref(), Ok(&fast), "{path} fast path disagrees on {what}:\n{text}");
+            match path {
+                "line" => taken.lines = true,
+                "layout" => taken.skeleton = true,
+                _ => {}
+            }
         }
     }
+    taken
 }
 
 #[test]
@@ -51,15 +74,18 @@ fn fast_path_reads_the_project_design_files() {
     let corpus = corpus();
     let mut taken = 0;
     for (name, text) in &corpus {
-        if agree(text, name) {
+        let t = agree(text, name);
+        if t.lines {
             taken += 1;
         } else {
             // Only hand-edited files (trailing spaces...) may defer, and they must read.
-            let space = Design::design_space();
-            read_design_full::<Design>(text, name, &space).unwrap_or_else(|e| panic!("{name}: {e}"));
+            read_design_full::<Design>(text, name, space()).unwrap_or_else(|e| panic!("{name}: {e}"));
         }
         if name.starts_with("sample") || name.starts_with("built-in") {
-            assert!(read_design_fast::<Design>(text, &Design::design_space()).is_some(), "{name} should take the fast path");
+            assert!(t.lines, "{name} should take the line reader");
+        }
+        if name.starts_with("sample") {
+            assert!(t.skeleton, "{name} should take the space's layout");
         }
     }
     assert!(taken * 10 >= corpus.len() * 9, "only {taken} of {} files took the fast path", corpus.len());
@@ -186,28 +212,73 @@ fn mutate(rng: &mut Rng, text: &str) -> String {
 fn fast_path_agrees_with_the_full_reader_on_mutated_files() {
     let corpus = corpus();
     let mut rng = Rng(0x2545_F491_4F6C_DD1D);
-    let (mut taken, mut total) = (0, 0);
+    let (mut lines, mut skeleton, mut total) = (0, 0, 0);
     let rounds = if cfg!(debug_assertions) { 1500 } else { 6000 };
     for round in 0..rounds {
         let (name, base) = &corpus[round % corpus.len()];
         let text = mutate(&mut rng, base);
         total += 1;
-        if agree(&text, &format!("{name}, mutation {round}")) {
-            taken += 1;
-        }
+        let t = agree(&text, &format!("{name}, mutation {round}"));
+        lines += usize::from(t.lines);
+        skeleton += usize::from(t.skeleton);
     }
     // Many mutations keep the file valid (a changed value, a comment); they must
-    // still be read by the fast path often enough for this test to mean something.
-    assert!(taken * 10 >= total, "only {taken} of {total} mutated files took the fast path");
+    // still be read by the fast paths often enough for this test to mean something.
+    assert!(lines * 10 >= total, "only {lines} of {total} mutated files took the line reader");
+    assert!(skeleton * 200 >= total, "only {skeleton} of {total} mutated files took the space's layout");
+}
+
+/// Written designs with other values (valid or not, plain or not) in their `v:`
+/// lines: the space's layout reader takes many and agrees on all.
+#[test]
+fn layout_reader_agrees_on_changed_values() {
+    let space = space();
+    let sampler = Sampler::new(space.clone());
+    let names: Vec<String> = space
+        .params()
+        .iter()
+        .filter_map(|p| match &p.range {
+            garmentcode::params::Range::Options(o) => Some(o.iter().map(|v| v.to_string()).collect::<Vec<_>>()),
+            _ => None,
+        })
+        .flatten()
+        .collect();
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let (mut skeleton, mut total) = (0, 0);
+    let rounds = if cfg!(debug_assertions) { 300 } else { 2000 };
+    for round in 0..rounds {
+        let d: Design = sampler.sample(&mut sample_rng(11, round as u64));
+        let text = write_design(&d, space);
+        let mut lines: Vec<String> = text.split('\n').map(str::to_string).collect();
+        let v_lines: Vec<usize> = (0..lines.len()).filter(|&i| lines[i].trim_start().starts_with("v: ")).collect();
+        for _ in 0..1 + rng.below(3) {
+            let i = v_lines[rng.below(v_lines.len())];
+            let value = match rng.below(4) {
+                0 => rng.pick(SCALARS).to_string(),
+                1 => names[rng.below(names.len())].clone(),
+                2 => format!("{}", (rng.next() % 4000) as f64 / 1000.0 - 1.0),
+                _ => ["1", "0", "2", "7", "95", "1.0", "1.", "0.5e+0", "+0.5", "-0.0", "true", "false", "null"][rng.below(13)].to_string(),
+            };
+            let l = &mut lines[i];
+            let c = l.find("v: ").expect("v line");
+            l.truncate(c + 3);
+            l.push_str(&value);
+        }
+        let text = lines.join("\n");
+        total += 1;
+        skeleton += usize::from(agree(&text, &format!("changed values, round {round}")).skeleton);
+    }
+    assert!(skeleton * 40 >= total, "only {skeleton} of {total} files took the space's layout");
 }
 
 /// Short synthetic files around the subset's borders.
 #[test]
 fn fast_path_borders() {
-    let space = Design::design_space();
-    let default = write_design(&Design::defaults(), &space);
+    let space = space();
+    let default = write_design(&Design::defaults(), space);
     // The plain layout is taken.
-    assert!(read_design_fast::<Design>(&default, &space).is_some());
+    assert!(read_design_lines::<Design>(&default, space).is_some());
+    assert!(read_design_skeleton::<Design>(&default, space).is_some());
     for text in [
         "design:\n  meta:\n    upper:\n      v: Shirt\n",
         "design:\n  meta:\n    upper:\n      v: Shirt\n  shirt:\n    length:\n      v: 1.5\n      range:\n      - 0.5\n      - 3.5\n",
@@ -243,8 +314,8 @@ fn fast_path_borders() {
         agree(text, text);
     }
     // Files the full reader accepts take the fast path when in the subset.
-    assert!(read_design_fast::<Design>("design:\n  meta:\n    upper:\n      v: Shirt\n", &space).is_some());
-    assert!(read_design_fast::<Design>("# c\ndesign:\n\n  meta:   \n    upper:\n      v: Shirt\n", &space).is_some());
-    assert!(read_design_fast::<Design>("design:\n  meta:  # c\n    upper:\n      v: Shirt # c\n", &space).is_some());
-    assert!(read_design_fast::<Design>("design:\n  meta:\n    upper:\n      v: Shirt# c\n", &space).is_none());
+    assert!(read_design_lines::<Design>("design:\n  meta:\n    upper:\n      v: Shirt\n", space).is_some());
+    assert!(read_design_lines::<Design>("# c\ndesign:\n\n  meta:   \n    upper:\n      v: Shirt\n", space).is_some());
+    assert!(read_design_lines::<Design>("design:\n  meta:  # c\n    upper:\n      v: Shirt # c\n", space).is_some());
+    assert!(read_design_lines::<Design>("design:\n  meta:\n    upper:\n      v: Shirt# c\n", space).is_none());
 }

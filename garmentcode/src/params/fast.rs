@@ -28,6 +28,38 @@ const MAX_DEPTH: usize = 64;
 
 /// The design in `text`, or `None` when the full reader must decide.
 pub(super) fn read_design_fast<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
+    let values = match space.skeleton() {
+        Some(skeleton) => skeleton.read_values(text, space).or_else(|| read_values_lines(text, space))?,
+        None => read_values_lines(text, space)?,
+    };
+    design_from_values(&values, space)
+}
+
+/// Only the line reader (for tests).
+pub(super) fn read_design_lines<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
+    design_from_values(&read_values_lines(text, space)?, space)
+}
+
+/// Only the space's layout (for tests; built even on a first read).
+pub(super) fn read_design_skeleton<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
+    design_from_values(&space.built_skeleton()?.read_values(text, space)?, space)
+}
+
+/// The design with these checked values (`None`: the space's default).
+fn design_from_values<D: Params>(values: &[Option<Value>], space: &DesignSpace) -> Option<D> {
+    // As `from_values`: every parameter is set, to its value or the space's default.
+    let mut d = D::defaults();
+    let mut keys: Vec<&str> = Vec::with_capacity(8);
+    for (spec, v) in space.params().iter().zip(values) {
+        keys.clear();
+        keys.extend(spec.path.split('.'));
+        d.set_value(&keys, v.as_ref().unwrap_or(&spec.default)).ok()?;
+    }
+    Some(d)
+}
+
+/// The checked value of every parameter the file sets, read line by line.
+fn read_values_lines(text: &str, space: &DesignSpace) -> Option<Vec<Option<Value>>> {
     if !printable_ascii(text.as_bytes()) {
         return None;
     }
@@ -42,15 +74,83 @@ pub(super) fn read_design_fast<D: Params>(text: &str, space: &DesignSpace) -> Op
     if r.cur.is_some() || !top.design_seen {
         return None;
     }
-    // As `from_values`: every parameter is set, to its value or the space's default.
-    let mut d = D::defaults();
-    let mut keys: Vec<&str> = Vec::with_capacity(8);
-    for (spec, v) in space.params().iter().zip(&r.values) {
-        keys.clear();
-        keys.extend(spec.path.split('.'));
-        d.set_value(&keys, v.as_ref().unwrap_or(&spec.default)).ok()?;
+    Some(r.values)
+}
+
+/// A design space's own file layout (as [`DesignSpace::to_yaml_with`] writes it)
+/// with holes where the parameters' `v` values go.
+///
+/// Why: files written for a space (the dataset sampler's, the benchmark's) repeat
+/// its ranges, types and probabilities around the values, about nine lines out of
+/// ten. When a file is the layout with plain values in the holes, comparing the
+/// literal text and reading only the values gives what the line reader gives, in a
+/// fraction of the time; anything else goes to the line reader.
+#[derive(Debug)]
+pub(super) struct Skeleton {
+    /// Literal text before each value, and the index of the value's parameter.
+    parts: Vec<(String, usize)>,
+    /// Literal text after the last value.
+    tail: String,
+}
+
+impl Skeleton {
+    /// The layout of `space`, or `None` if it is not one the line reader reads.
+    ///
+    /// Self-check: the space's own file of defaults, read through the holes, must
+    /// give a value for every parameter, the same values the line reader finds.
+    /// The lines around the holes are then lines the line reader accepts, and a
+    /// file that differs only by other plain scalars in the holes takes the same
+    /// path through it.
+    pub(super) fn new(space: &DesignSpace) -> Option<Skeleton> {
+        const MARK: &str = "zqvaluehole";
+        let n = space.params().len();
+        let holes = space.to_yaml_with(|p| Value::Str(format!("{MARK}{}{MARK}", space.index_of(&p.path).unwrap_or(usize::MAX))));
+        let mut parts = Vec::with_capacity(n);
+        let mut seen = vec![false; n];
+        let mut rest = holes.as_str();
+        while let Some(k) = rest.find(MARK) {
+            let after = &rest[k + MARK.len()..];
+            let digits = after.find(MARK)?;
+            let index: usize = after[..digits].parse().ok()?;
+            if index >= n || std::mem::replace(&mut seen[index], true) {
+                return None;
+            }
+            parts.push((rest[..k].to_string(), index));
+            rest = &after[digits + MARK.len()..];
+        }
+        if parts.len() != n {
+            return None;
+        }
+        let skeleton = Skeleton { parts, tail: rest.to_string() };
+        let defaults = space.to_yaml();
+        let through_holes = skeleton.read_values(&defaults, space)?;
+        (through_holes.iter().all(Option::is_some) && read_values_lines(&defaults, space)? == through_holes).then_some(skeleton)
     }
-    Some(d)
+
+    /// The checked values of a file that is this layout with plain scalars in the
+    /// holes; `None` for any other text or any value its parameter refuses.
+    fn read_values(&self, text: &str, space: &DesignSpace) -> Option<Vec<Option<Value>>> {
+        let src = text.as_bytes();
+        let mut values = vec![None; space.params().len()];
+        let mut pos = 0;
+        for (literal, index) in &self.parts {
+            if !src[pos..].starts_with(literal.as_bytes()) {
+                return None;
+            }
+            pos += literal.len();
+            let end = plain_run(src, pos);
+            if src.get(end).is_some_and(|&b| b != b'\n') {
+                return None; // anything but a plain scalar up to the end of the line
+            }
+            let s = &text[pos..end];
+            if !scalar_ok(s) {
+                return None;
+            }
+            values[*index] = Some(space.params()[*index].check(&value_of(s, resolve_plain(s))).ok()?);
+            pos = end;
+        }
+        (src[pos..] == *self.tail.as_bytes()).then_some(values)
+    }
 }
 
 /// One content line.

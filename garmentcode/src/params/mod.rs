@@ -26,9 +26,19 @@ pub use sample::{Sampler, sample_rng};
 pub mod testing {
     use super::{DesignError, DesignSpace, Params};
 
-    /// Only the fast path of [`super::read_design`]; `None` when it defers to the full reader.
+    /// Only the fast paths of [`super::read_design`]; `None` when they defer to the full reader.
     pub fn read_design_fast<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
         super::fast::read_design_fast(text, space)
+    }
+
+    /// Only the line reader of the fast path.
+    pub fn read_design_lines<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
+        super::fast::read_design_lines(text, space)
+    }
+
+    /// Only the space-layout reader of the fast path (the layout built for this call).
+    pub fn read_design_skeleton<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
+        super::fast::read_design_skeleton(text, space)
     }
 
     /// Only the full reader behind [`super::read_design`].

@@ -3,7 +3,10 @@
 
 use super::{Kind, ParamSpec, Range, Value};
 use crate::yaml::{self, Node, Value as Y};
+use super::fast::Skeleton;
 use std::collections::HashMap;
+use std::sync::OnceLock;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The flattened schema of a design.
 #[derive(Clone, Debug, PartialEq)]
@@ -12,6 +15,36 @@ pub struct DesignSpace {
     /// Every parameter's path and every group's path (a proper prefix of some
     /// parameter's path, at a dot), for lookups while reading design files.
     index: HashMap<String, Entry>,
+    /// The space's file layout, for reading the files written for it quickly.
+    skeleton: SkeletonSlot,
+}
+
+/// Lazily built [`Skeleton`], derived from the parameters (so it is not cloned
+/// and does not take part in comparisons).
+#[derive(Default)]
+struct SkeletonSlot {
+    /// Files read so far; the layout is built on the second (a single read
+    /// would not repay building it).
+    reads: AtomicUsize,
+    cell: OnceLock<Option<Skeleton>>,
+}
+
+impl Clone for SkeletonSlot {
+    fn clone(&self) -> Self {
+        SkeletonSlot::default()
+    }
+}
+
+impl PartialEq for SkeletonSlot {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl std::fmt::Debug for SkeletonSlot {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("SkeletonSlot")
+    }
 }
 
 /// What a dotted path names.
@@ -35,7 +68,20 @@ impl DesignSpace {
                 index.entry(p.path[..dot].to_string()).or_insert(Entry::Group);
             }
         }
-        DesignSpace { params, index }
+        DesignSpace { params, index, skeleton: SkeletonSlot::default() }
+    }
+
+    /// The space's file layout with holes for the values, from the second read on.
+    pub(super) fn skeleton(&self) -> Option<&Skeleton> {
+        if self.skeleton.reads.fetch_add(1, Ordering::Relaxed) == 0 {
+            return None;
+        }
+        self.built_skeleton()
+    }
+
+    /// The space's file layout with holes for the values, built now if not yet.
+    pub(super) fn built_skeleton(&self) -> Option<&Skeleton> {
+        self.skeleton.cell.get_or_init(|| Skeleton::new(self)).as_ref()
     }
 
     /// Every parameter, in document order.
