@@ -270,28 +270,59 @@ impl Edge {
                 };
                 crate::memo::edge_points(key, make, |pts| out.extend_from_slice(pts));
             }
-            Curve::Quadratic(c) => self.linearize_bezier(([bits(c)[0], bits(c)[1], 0, 0, 0, 0], b'Q', n), out),
-            Curve::Cubic(c1, c2) => {
-                let ([a, b], [c, d]) = (bits(c1), bits(c2));
-                self.linearize_bezier(([a, b, c, d, 0, 0], b'C', n), out);
-            }
+            Curve::Quadratic(_) | Curve::Cubic(..) => self.linearize_bezier(n, out),
         }
     }
 
     /// Equal-arc-length points of a Bézier edge, from the memoised points of its
     /// relative shape.
-    fn linearize_bezier(&self, key: crate::memo::EdgeKey, out: &mut Vec<Vec2>) {
-        let rel = self.relative_bezier().expect("Bézier edge");
-        let make = || {
-            let len = rel.length();
-            interior_params(key.2 + 1)
-                .map(|f| {
-                    let t = rel.inverse_length_given_total(f * len, len).unwrap_or(f);
-                    rel.point(t)
-                })
-                .collect()
+    ///
+    /// A shape and its mirror image across the chord (the curves of a mirrored
+    /// panel) share one entry, kept for the one whose first control point is not
+    /// below the chord. Mirroring negates every y input; the speeds (hence lengths
+    /// and parameters) use only squares of y differences and come out bit for bit
+    /// the same, and every y value computed from the negated inputs is exactly the
+    /// negated value, except that a zero may differ in sign. So the mirrored points
+    /// are the entry's with y negated, unless one of them is zero: then the points
+    /// are computed directly.
+    fn linearize_bezier(&self, n: usize, out: &mut Vec<Vec2>) {
+        let first_y = match self.curve {
+            Curve::Quadratic(c) | Curve::Cubic(c, _) => c.y,
+            Curve::Line | Curve::Arc { .. } => unreachable!("Bézier edge"),
         };
-        crate::memo::edge_points(key, make, |pts| out.extend(pts.iter().map(|p| self.to_abs(*p))));
+        let flip = first_y < 0.0;
+        let shape = if flip { Edge { curve: self.curve.reflected(), ..*self } } else { *self };
+        let bits = |v: Vec2| [v.x.to_bits(), v.y.to_bits()];
+        let key = match shape.curve {
+            Curve::Quadratic(c) => ([bits(c)[0], bits(c)[1], 0, 0, 0, 0], b'Q', n),
+            Curve::Cubic(c1, c2) => ([bits(c1)[0], bits(c1)[1], bits(c2)[0], bits(c2)[1], 0, 0], b'C', n),
+            Curve::Line | Curve::Arc { .. } => unreachable!("Bézier edge"),
+        };
+        let done = crate::memo::edge_points(key, || shape.relative_linearization(n), |pts| {
+            if !flip {
+                out.extend(pts.iter().map(|p| self.to_abs(*p)));
+            } else if pts.iter().all(|p| p.y != 0.0) {
+                out.extend(pts.iter().map(|p| self.to_abs(Vec2::new(p.x, -p.y))));
+            } else {
+                return false;
+            }
+            true
+        });
+        if !done {
+            out.extend(self.relative_linearization(n).into_iter().map(|p| self.to_abs(p)));
+        }
+    }
+
+    /// `n` points at equal arc-length steps on the relative Bézier curve.
+    fn relative_linearization(&self, n: usize) -> Vec<Vec2> {
+        let rel = self.relative_bezier().expect("Bézier edge");
+        let len = rel.length();
+        interior_params(n + 1)
+            .map(|f| {
+                let t = rel.inverse_length_given_total(f * len, len).unwrap_or(f);
+                rel.point(t)
+            })
+            .collect()
     }
 
     /// Default number of interior linearisation points (0 for lines, 9 for curves).
@@ -436,5 +467,38 @@ mod tests {
         let seg = e.segment();
         let t = seg.inverse_length(e.length() * 0.3).unwrap();
         assert!((pts[2] - seg.point(t)).length() < 1e-9);
+    }
+
+    /// The memoised linearisation (mirror images sharing an entry) gives the bits
+    /// of the direct computation, shapes with zero coordinates included.
+    #[test]
+    fn memoised_linearization_is_the_direct_one() {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 1.6
+        };
+        let direct = |e: &Edge| -> Vec<Vec2> { e.relative_linearization(9).into_iter().map(|p| e.to_abs(p)).collect() };
+        for k in 0..400 {
+            let (a, b, c, d) = (next(), next(), next(), next());
+            let zero = |x: f64| if k % 7 == 0 { 0.0 } else if k % 11 == 0 { -0.0 } else { x };
+            let (start, end) = (v(next() * 50.0, next() * 50.0), v(next() * 50.0 + 60.0, next() * 50.0));
+            for curve in [
+                Curve::Cubic(v(a, b), v(c, zero(d))),
+                Curve::Cubic(v(a, zero(b)), v(c, d)),
+                Curve::Quadratic(v(a, zero(b))),
+                Curve::Cubic(v(0.3, 0.0), v(0.7, -0.0)),
+            ] {
+                for e in [Edge { start, end, curve }, Edge { start, end, curve: curve.reflected() }] {
+                    crate::memo::clear();
+                    let mirrored = Edge { curve: e.curve.reflected(), ..e };
+                    let _ = mirrored.linearize(9); // fill the shared entry from the mirror image
+                    let bits = |p: &[Vec2]| p.iter().map(|q| (q.x.to_bits(), q.y.to_bits())).collect::<Vec<_>>();
+                    assert_eq!(bits(&e.linearize(9)), bits(&direct(&e)), "{e:?}");
+                }
+            }
+        }
     }
 }
