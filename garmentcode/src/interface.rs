@@ -97,15 +97,24 @@ impl Arena {
     /// A new interface concatenating others (their edges, panels, flags and gather
     /// sections, in order). Later splits in the new interface do not reach the sources.
     pub fn interface_from(&mut self, parts: &[InterfaceId]) -> InterfaceId {
-        let mut d = InterfaceData::default();
+        // Sized once and copied from the sources in place (no clone of each source).
+        let n: usize = parts.iter().map(|&p| self.iface(p).edges.len()).sum();
+        let sections: usize = parts.iter().map(|&p| self.iface(p).ruffle.len()).sum();
+        let mut d = InterfaceData {
+            edges: EdgeSeq(Vec::with_capacity(n)),
+            panels: Vec::with_capacity(n),
+            right_wrong: Vec::with_capacity(n),
+            flipping: Vec::with_capacity(n),
+            ruffle: Vec::with_capacity(sections),
+        };
         for &p in parts {
-            let src = self.iface(p).clone();
+            let src = self.iface(p);
             let shift = d.edges.len();
             d.ruffle.extend(src.ruffle.iter().map(|r| Ruffle { coeff: r.coeff, start: r.start + shift, end: r.end + shift }));
-            d.edges.extend(src.edges.iter().copied());
-            d.panels.extend(src.panels);
-            d.right_wrong.extend(src.right_wrong);
-            d.flipping.extend(src.flipping);
+            d.edges.extend_from_slice(&src.edges);
+            d.panels.extend_from_slice(&src.panels);
+            d.right_wrong.extend_from_slice(&src.right_wrong);
+            d.flipping.extend_from_slice(&src.flipping);
         }
         self.interfaces.push(d);
         InterfaceId((self.interfaces.len() - 1) as u32)

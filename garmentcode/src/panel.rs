@@ -199,26 +199,35 @@ impl PanelId {
     /// works for non-convex outlines).
     pub fn norm(self, a: &Arena) -> Vec3 {
         let (_, b2) = self.edges(a).bbox_points(a);
-        let b3: Vec<Vec3> = b2.iter().map(|p| self.point_to_3d(a, *p)).collect();
-        let m = b3.len();
+        // The box points in 3D (a handful: on the stack).
+        let m = b2.len();
+        let mut stack = [Vec3::ZERO; 16];
+        let heap: Vec<Vec3>;
+        let b3: &[Vec3] = if m <= stack.len() {
+            for (slot, p) in stack.iter_mut().zip(&b2) {
+                *slot = self.point_to_3d(a, *p);
+            }
+            &stack[..m]
+        } else {
+            heap = b2.iter().map(|p| self.point_to_3d(a, *p)).collect();
+            &heap
+        };
         let mut sum = Vec3::ZERO;
-        for p in &b3 {
+        for p in b3 {
             sum += *p;
         }
         let c = sum / m as f64;
-        let norms: Vec<Vec3> = (0..m)
-            .map(|i| {
-                let n = (b3[i] - c).cross(b3[(i + 1) % m] - c);
-                n / n.length()
-            })
-            .collect();
+        let normal = |i: usize| {
+            let n = (b3[i] - c).cross(b3[(i + 1) % m] - c);
+            n / n.length()
+        };
         let mut avg = Vec3::ZERO;
-        for n in &norms {
-            avg += *n;
+        for i in 0..m {
+            avg += normal(i);
         }
         avg /= m as f64;
         if avg.length() < 1e-4 {
-            avg = norms[0];
+            avg = normal(0);
         }
         let mut n = avg / avg.length();
         for k in 0..3 {

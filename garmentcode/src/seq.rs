@@ -307,10 +307,12 @@ impl EdgeSeq {
     /// As [`EdgeSeq::linearized_positions`] with `n` interior points on every edge
     /// (straight ones included) when given.
     pub fn linearized_positions_n(&self, a: &Arena, n: Option<usize>) -> Vec<Vec2> {
-        let mut out = Vec::new();
         if self.0.is_empty() {
-            return out;
+            return Vec::new();
         }
+        // Sized once: growing by doubling cost several reallocations per call.
+        let points = |e: EdgeId| n.unwrap_or(if a.curve(e) == Curve::Line { 0 } else { 9 });
+        let mut out = Vec::with_capacity(1 + self.0.iter().map(|&e| 2 + points(e)).sum::<usize>());
         let first = a.start(self.0[0]);
         let mut last_id = Some(first);
         out.push(a.pos(first));
