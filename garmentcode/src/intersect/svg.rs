@@ -121,17 +121,28 @@ pub fn try_intersect_as(
     b: &Seg,
     b_num: Num,
 ) -> Result<Vec<(f64, f64)>, IntersectError> {
+    let mut out = Vec::new();
+    intersect_into(a, a_num, b, b_num, &mut out)?;
+    Ok(out)
+}
+
+/// [`try_intersect_as`] appending the parameter pairs to `out` (so that a caller
+/// testing many pairs reuses one vector).
+fn intersect_into(a: &Seg, a_num: Num, b: &Seg, b_num: Num, out: &mut Vec<(f64, f64)>) -> Result<(), IntersectError> {
     // Every `intersect` method starts with a control-point bounding-box reject
     // (strict comparisons: touching boxes go on to the real test).
     if !control_boxes_may_meet(a.points(), b.points()) {
-        return Ok(Vec::new());
+        return Ok(());
     }
     match (a, b) {
-        (Seg::Line(l1), Seg::Line(l2)) => line_line(l1, l2),
+        (Seg::Line(l1), Seg::Line(l2)) => line_line(l1, l2, out),
         (Seg::Line(l), Seg::Quad(_) | Seg::Cubic(_)) => {
-            Ok(swap_pairs(bezier_by_line(b.points(), l, a_num)?))
+            let first = out.len();
+            bezier_by_line(b.points(), l, a_num, out)?;
+            out[first..].iter_mut().for_each(|h| *h = (h.1, h.0));
+            Ok(())
         }
-        (Seg::Quad(_) | Seg::Cubic(_), Seg::Line(l)) => bezier_by_line(a.points(), l, b_num),
+        (Seg::Quad(_) | Seg::Cubic(_), Seg::Line(l)) => bezier_by_line(a.points(), l, b_num, out),
         _ => {
             // Quad–Quad and Cubic–(Quad|Cubic) assert inequality; Quad–Cubic
             // does not, but a quadratic never equals a cubic anyway.
@@ -139,7 +150,7 @@ pub fn try_intersect_as(
                 return Err(IntersectError::IdenticalSegments);
             }
             let longer = a.length().max(b.length());
-            bezier_intersections(a.points(), b.points(), longer, 1e-12, 1e-12)
+            bezier_intersections(a.points(), b.points(), longer, 1e-12, 1e-12, out)
         }
     }
 }
@@ -149,12 +160,14 @@ pub fn try_has_self_intersection(segs: &[Seg]) -> Result<bool, IntersectError> {
     // The control-point box reject that starts every `intersect` call, with each
     // segment's box computed once instead of once per pair (most pairs stop there).
     let boxes: Vec<ControlBox> = segs.iter().map(|s| ControlBox::of(s.points())).collect();
+    let mut hits = Vec::new();
     for i1 in 0..segs.len() {
         for i2 in i1 + 1..segs.len() {
             if !boxes[i1].may_meet(&boxes[i2]) {
                 continue;
             }
-            let hits = try_intersect(&segs[i1], &segs[i2])?;
+            hits.clear();
+            intersect_into(&segs[i1], Num::Numpy, &segs[i2], Num::Numpy, &mut hits)?;
             let real_hit = hits.iter().any(|&(t1, t2)| {
                 let (lo, hi) = if t2 < t1 { (t2, t1) } else { (t1, t2) };
                 !((lo - 0.0).abs() < 1e-4 && (hi - 1.0).abs() < 1e-4)
@@ -167,8 +180,35 @@ pub fn try_has_self_intersection(segs: &[Seg]) -> Result<bool, IntersectError> {
     Ok(false)
 }
 
-fn swap_pairs(v: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
-    v.into_iter().map(|(x, y)| (y, x)).collect()
+/// A short list kept on the stack: the polynomials, roots and parameters here
+/// have a handful of entries, and a vector for each cost more than the
+/// arithmetic. Pushing past `N` panics (the sizes are bounded by the degrees).
+#[derive(Clone, Copy, Debug)]
+struct Few<T: Copy + Default, const N: usize> {
+    len: usize,
+    items: [T; N],
+}
+
+impl<T: Copy + Default, const N: usize> Few<T, N> {
+    fn new() -> Self {
+        Few { len: 0, items: [T::default(); N] }
+    }
+    fn from_slice(s: &[T]) -> Self {
+        let mut f = Self::new();
+        s.iter().for_each(|&x| f.push(x));
+        f
+    }
+    fn push(&mut self, x: T) {
+        self.items[self.len] = x;
+        self.len += 1;
+    }
+}
+
+impl<T: Copy + Default, const N: usize> std::ops::Deref for Few<T, N> {
+    type Target = [T];
+    fn deref(&self) -> &[T] {
+        &self.items[..self.len]
+    }
 }
 
 fn min_max(v: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -220,7 +260,7 @@ impl ControlBox {
 /// `Line.intersect(Line)`, with the library's formula so results are
 /// bit-identical. Parallel test is `np.isclose(den, 0)`, i.e. `|den| <= 1e-8`
 /// in absolute terms (so short, nearly parallel lines count as parallel).
-fn line_line(s: &[P; 2], o: &[P; 2]) -> Result<Vec<(f64, f64)>, IntersectError> {
+fn line_line(s: &[P; 2], o: &[P; 2], out: &mut Vec<(f64, f64)>) -> Result<(), IntersectError> {
     if o[0] == o[1] || s[0] == s[1] {
         return Err(IntersectError::DegenerateLine);
     }
@@ -233,15 +273,14 @@ fn line_line(s: &[P; 2], o: &[P; 2]) -> Result<Vec<(f64, f64)>, IntersectError> 
     let d = (o[0][1], o[1][1]);
     let denom = (a.1 - a.0) * (d.0 - d.1) - (b.1 - b.0) * (c.0 - c.1);
     if denom.abs() <= 1e-8 {
-        return Ok(Vec::new());
+        return Ok(());
     }
     let t1 = (c.0 * (b.0 - d.1) - c.1 * (b.0 - d.0) - a.0 * (d.0 - d.1)) / denom;
     let t2 = -(a.1 * (b.0 - d.0) - a.0 * (b.1 - d.0) - c.0 * (b.0 - b.1)) / denom;
     if (0.0..=1.0).contains(&t1) && (0.0..=1.0).contains(&t2) {
-        Ok(vec![(t1, t2)])
-    } else {
-        Ok(Vec::new())
+        out.push((t1, t2));
     }
+    Ok(())
 }
 
 // ---------------------------------------------------------------------------
@@ -367,6 +406,11 @@ fn frexp(v: f64) -> (f64, i32) {
 /// probe `i = (5 i + 1 + perturb) & 7`, `perturb >>= 5`. Equal values
 /// (including `0.0 == -0.0`) keep the first one inserted.
 pub fn py_set_order(values: &[f64]) -> Vec<f64> {
+    set_order(values).to_vec()
+}
+
+/// [`py_set_order`] on the stack.
+fn set_order(values: &[f64]) -> Few<f64, 4> {
     assert!(
         values.len() <= 4,
         "set emulation is for the small table only"
@@ -394,7 +438,9 @@ pub fn py_set_order(values: &[f64]) -> Vec<f64> {
                 & MASK;
         }
     }
-    table.iter().flatten().map(|&(_, x)| x).collect()
+    let mut out = Few::new();
+    table.iter().flatten().for_each(|&(_, x)| out.push(x));
+    out
 }
 
 // ---------------------------------------------------------------------------
@@ -405,14 +451,25 @@ pub fn py_set_order(values: &[f64]) -> Vec<f64> {
 /// after stripping leading zeros: `(re, im)` pairs in numpy's order. Leading
 /// zeros are dropped, trailing zeros become exact zero roots at the end.
 pub fn np_roots(p: &[f64]) -> Vec<(f64, f64)> {
+    // The trailing zeros are zero roots after the others (any number of them).
+    let Some(last) = p.iter().rposition(|&c| c != 0.0) else { return Vec::new() };
+    let mut out = complex_roots(&p[..=last]).to_vec();
+    out.extend(std::iter::repeat_n((0.0, 0.0), p.len() - last - 1));
+    out
+}
+
+/// [`np_roots`] on the stack, for at most five coefficients (the port's
+/// matrices are at most 4×4, so there are at most four roots).
+fn complex_roots(p: &[f64]) -> Few<(f64, f64), 4> {
+    debug_assert!(p.len() <= 5, "complex_roots: at most five coefficients");
     let first = p.iter().position(|&c| c != 0.0);
     let Some(first) = first else {
-        return Vec::new();
+        return Few::new();
     };
-    let Some(last) = p.iter().rposition(|&c| c != 0.0) else { return Vec::new() };
+    let Some(last) = p.iter().rposition(|&c| c != 0.0) else { return Few::new() };
     let trailing = p.len() - last - 1;
     let q = &p[first..=last];
-    let mut out = Vec::with_capacity(p.len());
+    let mut out = Few::new();
     let n = q.len() - 1; // companion size
     if n == 1 {
         // A 1×1 companion matrix is its own eigenvalue (LAPACK returns the
@@ -427,12 +484,14 @@ pub fn np_roots(p: &[f64]) -> Vec<(f64, f64)> {
         for i in 2..=n {
             a.set(i, i - 1, 1.0);
         }
-        let (wr, wi) = lapack::eigvals(&mut a);
-        for k in 0..n {
+        let (wr, wi) = lapack::eigvals_fixed(&mut a);
+        for k in 1..=n {
             out.push((wr[k], wi[k]));
         }
     }
-    out.extend(std::iter::repeat_n((0.0, 0.0), trailing));
+    for _ in 0..trailing {
+        out.push((0.0, 0.0));
+    }
     out
 }
 
@@ -442,34 +501,62 @@ pub fn np_roots(p: &[f64]) -> Vec<(f64, f64)> {
 /// `combinations(roots, 2)` and drops the root with that index, so for three
 /// roots a close pair (0, 2) drops root 1.
 pub fn polyroots_real(p: &[f64], condition: impl Fn(f64) -> bool) -> Vec<f64> {
-    let roots: Vec<f64> = np_roots(p)
-        .into_iter()
-        .filter(|&(_, im)| im.abs() < 1e-8)
-        .map(|(re, _)| re)
-        .filter(|&r| condition(r))
-        .collect();
-    let mut dup = Vec::new();
+    let roots: Vec<f64> = np_roots(p).into_iter().filter(|&(_, im)| im.abs() < 1e-8).map(|(re, _)| re).filter(|&r| condition(r)).collect();
+    let mut out = Vec::new();
+    keep_distinct(&roots, |r| out.push(r));
+    out
+}
+
+/// [`polyroots_real`] on the stack, for at most five coefficients.
+fn real_roots(p: &[f64], condition: impl Fn(f64) -> bool) -> Few<f64, 4> {
+    let mut roots: Few<f64, 4> = Few::new();
+    for &(re, im) in complex_roots(p).iter() {
+        if im.abs() < 1e-8 && condition(re) {
+            roots.push(re);
+        }
+    }
+    let mut out = Few::new();
+    keep_distinct(&roots, |r| out.push(r));
+    out
+}
+
+/// The library's near-duplicate filter of [`polyroots_real`], passing the kept
+/// roots to `keep` in order (QUIRK: pair indices drop roots, see there).
+fn keep_distinct(roots: &[f64], mut keep: impl FnMut(f64)) {
+    let n = roots.len();
+    let mut small = [false; 8];
+    let mut large = Vec::new();
+    let dropped: &mut [bool] = if n <= small.len() {
+        &mut small[..n]
+    } else {
+        large.resize(n, false);
+        &mut large
+    };
     let mut idx = 0;
-    for i in 0..roots.len() {
-        for j in i + 1..roots.len() {
+    for i in 0..n {
+        for j in i + 1..n {
             let (r1, r2) = (roots[i], roots[j]);
-            if (r1 - r2).abs() < 1e-8 + 1e-5 * r2.abs() {
-                dup.push(idx);
+            if (r1 - r2).abs() < 1e-8 + 1e-5 * r2.abs() && idx < n {
+                dropped[idx] = true;
             }
             idx += 1;
         }
     }
-    roots
-        .into_iter()
-        .enumerate()
-        .filter(|(i, _)| !dup.contains(i))
-        .map(|(_, r)| r)
-        .collect()
+    for (i, &r) in roots.iter().enumerate() {
+        if !dropped[i] {
+            keep(r);
+        }
+    }
 }
 
 /// svgpathtools' `polyroots01`: real roots in the closed interval [0, 1].
 pub fn polyroots01(p: &[f64]) -> Vec<f64> {
     polyroots_real(p, |r| (0.0..=1.0).contains(&r))
+}
+
+/// [`polyroots01`] on the stack, for at most five coefficients.
+fn real_roots01(p: &[f64]) -> Few<f64, 4> {
+    real_roots(p, |r| (0.0..=1.0).contains(&r))
 }
 
 /// Minimal ports of the LAPACK 3.11 routines behind `numpy.linalg.eigvals`
@@ -1221,8 +1308,16 @@ pub mod lapack {
     /// Returned in LAPACK's order (0-based vectors of length n).
     pub fn eigvals(a: &mut Mat) -> (Vec<f64>, Vec<f64>) {
         let n = a.n;
-        let mut wr = vec![0.0f64; n + 1];
-        let mut wi = vec![0.0f64; n + 1];
+        let (wr, wi) = eigvals_fixed(a);
+        (wr[1..=n].to_vec(), wi[1..=n].to_vec())
+    }
+
+    /// [`eigvals`] into arrays indexed from 1 like the Fortran (entries past
+    /// `n` are zero).
+    pub(super) fn eigvals_fixed(a: &mut Mat) -> ([f64; MAXN + 1], [f64; MAXN + 1]) {
+        let n = a.n;
+        let mut wr = [0.0f64; MAXN + 1];
+        let mut wi = [0.0f64; MAXN + 1];
         let (ilo, ihi) = dgebal(a);
         if ihi > ilo {
             dgehd2(a, ilo, ihi);
@@ -1244,7 +1339,7 @@ pub mod lapack {
                 wi[k] = f64::NAN;
             }
         }
-        (wr[1..].to_vec(), wi[1..].to_vec())
+        (wr, wi)
     }
 }
 
@@ -1283,29 +1378,31 @@ fn bezier_point(p: &[P], t: f64) -> P {
 }
 
 /// `bezier2polynomial` for one real coordinate, highest degree first.
-fn bezier2poly(p: &[f64]) -> Vec<f64> {
+fn bezier2poly(p: &[f64]) -> Few<f64, 4> {
     match p.len() {
-        4 => vec![
+        4 => Few::from_slice(&[
             -p[0] + 3.0 * (p[1] - p[2]) + p[3],
             3.0 * (p[0] - 2.0 * p[1] + p[2]),
             3.0 * (p[1] - p[0]),
             p[0],
-        ],
-        3 => vec![p[0] - 2.0 * p[1] + p[2], 2.0 * (p[1] - p[0]), p[0]],
-        2 => vec![p[1] - p[0], p[0]],
-        _ => p.to_vec(),
+        ]),
+        3 => Few::from_slice(&[p[0] - 2.0 * p[1] + p[2], 2.0 * (p[1] - p[0]), p[0]]),
+        2 => Few::from_slice(&[p[1] - p[0], p[0]]),
+        _ => Few::from_slice(p),
     }
 }
 
 /// `numpy.poly1d(c).deriv().coeffs` (leading zeros trimmed first).
-fn poly_deriv(c: &[f64]) -> Vec<f64> {
+fn poly_deriv(c: &[f64]) -> Few<f64, 4> {
     let first = c.iter().position(|&x| x != 0.0).unwrap_or(c.len());
     let c = &c[first..];
     if c.len() <= 1 {
-        return vec![0.0];
+        return Few::from_slice(&[0.0]);
     }
     let n = c.len() - 1;
-    (0..n).map(|k| c[k] * (n - k) as f64).collect()
+    let mut out = Few::new();
+    (0..n).for_each(|k| out.push(c[k] * (n - k) as f64));
+    out
 }
 
 /// `numpy.polyval` (Horner from a zero start).
@@ -1320,7 +1417,7 @@ fn polyval(c: &[f64], t: f64) -> f64 {
 /// `bezier_real_minmax` for a cubic's coordinate (closed form for the
 /// derivative roots unless the cubic term vanishes, then `polyroots01`).
 fn cubic_real_minmax(a: &[f64; 4]) -> (f64, f64) {
-    let mut ext: Vec<f64> = vec![0.0, 1.0];
+    let mut ext: Few<f64, 8> = Few::from_slice(&[0.0, 1.0]);
     let denom = a[0] - 3.0 * a[1] + 3.0 * a[2] - a[3];
     if denom.abs() > 1e-12 {
         let delta = py_sq(a[1]) - (a[0] + a[1]) * a[2] + py_sq(a[2]) + (a[0] - a[1]) * a[3];
@@ -1338,7 +1435,7 @@ fn cubic_real_minmax(a: &[f64; 4]) -> (f64, f64) {
         }
     } else {
         let d = poly_deriv(&bezier2poly(a));
-        ext.extend(polyroots01(&d));
+        real_roots01(&d).iter().for_each(|&r| ext.push(r));
     }
     min_max(ext.iter().map(|&t| bezier_point_1d(a, t)))
 }
@@ -1357,10 +1454,11 @@ fn bezier_bbox(b: &Bez) -> [f64; 4] {
     // in the open interval, values by numpy.polyval.
     let mut out = [0.0; 4];
     for k in 0..2 {
-        let cs: Vec<f64> = pts.iter().map(|p| p[k]).collect();
+        let mut cs: Few<f64, 4> = Few::new();
+        pts.iter().for_each(|p| cs.push(p[k]));
         let poly = bezier2poly(&cs);
-        let mut ext = vec![0.0, 1.0];
-        ext.extend(polyroots_real(&poly_deriv(&poly), |r| 0.0 < r && r < 1.0));
+        let mut ext: Few<f64, 8> = Few::from_slice(&[0.0, 1.0]);
+        real_roots(&poly_deriv(&poly), |r| 0.0 < r && r < 1.0).iter().for_each(|&r| ext.push(r));
         let (lo, hi) = min_max(ext.iter().map(|&t| polyval(&poly, t)));
         out[2 * k] = lo;
         out[2 * k + 1] = hi;
@@ -1422,22 +1520,20 @@ fn halve(b: &Bez) -> (Bez, Bez) {
         return (mk(lx, ly), mk(rx, ry));
     }
     // de Casteljau with t = 0.5
-    let n = p.len();
-    let mut left = Vec::with_capacity(n);
-    let mut right = Vec::with_capacity(n);
-    let mut cur: Vec<P> = p.to_vec();
+    let mut left: Few<P, 4> = Few::new();
+    let mut right: Few<P, 4> = Few::new();
+    let mut cur: Few<P, 4> = Few::from_slice(p);
     loop {
         left.push(cur[0]);
         right.push(cur[cur.len() - 1]);
         if cur.len() == 1 {
             break;
         }
-        cur = cur
-            .windows(2)
-            .map(|w| [avg2(w[0][0], w[1][0]), avg2(w[0][1], w[1][1])])
-            .collect();
+        let mut next: Few<P, 4> = Few::new();
+        cur.windows(2).for_each(|w| next.push([avg2(w[0][0], w[1][0]), avg2(w[0][1], w[1][1])]));
+        cur = next;
     }
-    right.reverse();
+    right.items[..right.len].reverse();
     (Bez::new(&left), Bez::new(&right))
 }
 
@@ -1462,7 +1558,8 @@ fn bezier_intersections(
     longer_length: f64,
     tol: f64,
     tol_dec: f64,
-) -> Result<Vec<(f64, f64)>, IntersectError> {
+    out: &mut Vec<(f64, f64)>,
+) -> Result<(), IntersectError> {
     let maxits = (1.0 - (tol_dec / longer_length).ln() / 2f64.ln()).ceil();
     let mut pair_list = vec![BPair {
         b1: Bez::new(bez1),
@@ -1470,7 +1567,6 @@ fn bezier_intersections(
         t1: 0.5,
         t2: 0.5,
     }];
-    let mut out = Vec::new();
     let mut approx_points: Vec<P> = Vec::new();
     let mut k: i32 = 0;
     while !pair_list.is_empty() && (k as f64) < maxits {
@@ -1541,7 +1637,7 @@ fn bezier_intersections(
     if k as f64 >= maxits {
         return Err(IntersectError::MaxIterations);
     }
-    Ok(out)
+    Ok(())
 }
 
 /// `bezier_by_line_intersections(bezier, line)`: `(t_bezier, t_line)` pairs.
@@ -1549,7 +1645,8 @@ fn bezier_by_line(
     bez: &[P],
     line: &[P; 2],
     line_num: Num,
-) -> Result<Vec<(f64, f64)>, IntersectError> {
+    out: &mut Vec<(f64, f64)>,
+) -> Result<(), IntersectError> {
     if line[0] == line[1] {
         return Err(IntersectError::DegenerateLine);
     }
@@ -1573,15 +1670,14 @@ fn bezier_by_line(
         xs[k] = tz[0];
         ys[k] = tz[1];
     }
-    let roots = polyroots01(&bezier2poly(&ys[..n]));
-    let mut out = Vec::new();
-    for t in py_set_order(&roots) {
+    let roots = real_roots01(&bezier2poly(&ys[..n]));
+    for &t in set_order(&roots).iter() {
         let xval = bezier_point_1d(&xs[..n], t);
         if 0.0 <= xval && xval <= line_length {
             out.push((t, xval / line_length));
         }
     }
-    Ok(out)
+    Ok(())
 }
 
 // ---------------------------------------------------------------------------
