@@ -51,6 +51,9 @@ pub struct Arena {
     pub(crate) panels: Vec<PanelData>,
     pub(crate) interfaces: Vec<InterfaceData>,
     labels: Vec<String>,
+    /// Interfaces of previous garments, kept for their buffers (see
+    /// [`Arena::clear`]); never read as interfaces.
+    pub(crate) spare_interfaces: Vec<InterfaceData>,
 }
 
 impl Default for Arena {
@@ -62,7 +65,14 @@ impl Default for Arena {
 impl Arena {
     /// An empty arena.
     pub fn new() -> Arena {
-        Arena { verts: Vec::new(), edges: Vec::new(), panels: Vec::new(), interfaces: Vec::new(), labels: vec![String::new()] }
+        Arena {
+            verts: Vec::new(),
+            edges: Vec::new(),
+            panels: Vec::new(),
+            interfaces: Vec::new(),
+            labels: vec![String::new()],
+            spare_interfaces: Vec::new(),
+        }
     }
 
     /// Forget everything (keeping the allocations) to build another garment.
@@ -71,7 +81,9 @@ impl Arena {
         self.verts.clear();
         self.edges.clear();
         self.panels.clear();
-        self.interfaces.clear();
+        // A garment makes dozens of interfaces of four or five small vectors each:
+        // the next garment reuses their buffers.
+        self.spare_interfaces.append(&mut self.interfaces);
         self.labels.truncate(1);
     }
 

@@ -58,6 +58,18 @@ impl Arena {
         &mut self.interfaces[i.0 as usize]
     }
 
+    /// An empty interface record, with the buffers of one of a previous garment
+    /// when there is one.
+    fn blank_interface(&mut self) -> InterfaceData {
+        let Some(mut d) = self.spare_interfaces.pop() else { return InterfaceData::default() };
+        d.edges.0.clear();
+        d.panels.clear();
+        d.right_wrong.clear();
+        d.flipping.clear();
+        d.ruffle.clear();
+        d
+    }
+
     /// A new interface over `edges` of `panel`, flat (no gathers).
     pub fn interface(&mut self, panel: PanelId, edges: impl Into<EdgeSeq>) -> InterfaceId {
         self.interface_gathered(panel, edges, Gather::Uniform(1.0)).expect("uniform gathers always fit")
@@ -67,46 +79,38 @@ impl Arena {
     pub fn interface_gathered(&mut self, panel: PanelId, edges: impl Into<EdgeSeq>, gather: impl Into<Gather>) -> Result<InterfaceId> {
         let edges = edges.into();
         let n = edges.len();
-        let ruffle = match gather.into() {
-            Gather::Uniform(c) => vec![Ruffle { coeff: c, start: 0, end: n }],
+        let gather = gather.into();
+        if let Gather::PerEdge(coeffs) = &gather
+            && coeffs.len() != n
+        {
+            return Err(Error::Interface(format!("{} gather factors for {n} edges", coeffs.len())));
+        }
+        let mut d = self.blank_interface();
+        match gather {
+            Gather::Uniform(c) => d.ruffle.push(Ruffle { coeff: c, start: 0, end: n }),
             Gather::PerEdge(coeffs) => {
-                if coeffs.len() != n {
-                    return Err(Error::Interface(format!("{} gather factors for {n} edges", coeffs.len())));
-                }
-                let mut out = Vec::new();
                 let mut start = 0;
                 for i in 1..=n {
                     if i == n || coeffs[i] != coeffs[start] {
-                        out.push(Ruffle { coeff: coeffs[start], start, end: i });
+                        d.ruffle.push(Ruffle { coeff: coeffs[start], start, end: i });
                         start = i;
                     }
                 }
-                out
             }
-        };
-        self.interfaces.push(InterfaceData {
-            edges,
-            panels: vec![panel; n],
-            right_wrong: vec![false; n],
-            flipping: vec![false; n],
-            ruffle,
-        });
+        }
+        d.edges = edges;
+        d.panels.resize(n, panel);
+        d.right_wrong.resize(n, false);
+        d.flipping.resize(n, false);
+        self.interfaces.push(d);
         Ok(InterfaceId((self.interfaces.len() - 1) as u32))
     }
 
     /// A new interface concatenating others (their edges, panels, flags and gather
     /// sections, in order). Later splits in the new interface do not reach the sources.
     pub fn interface_from(&mut self, parts: &[InterfaceId]) -> InterfaceId {
-        // Sized once and copied from the sources in place (no clone of each source).
-        let n: usize = parts.iter().map(|&p| self.iface(p).edges.len()).sum();
-        let sections: usize = parts.iter().map(|&p| self.iface(p).ruffle.len()).sum();
-        let mut d = InterfaceData {
-            edges: EdgeSeq(Vec::with_capacity(n)),
-            panels: Vec::with_capacity(n),
-            right_wrong: Vec::with_capacity(n),
-            flipping: Vec::with_capacity(n),
-            ruffle: Vec::with_capacity(sections),
-        };
+        // Copied from the sources in place (no clone of each source).
+        let mut d = self.blank_interface();
         for &p in parts {
             let src = self.iface(p);
             let shift = d.edges.len();
@@ -183,9 +187,10 @@ impl InterfaceId {
 
     /// [`InterfaceId::projecting_lengths`] normalised to sum to one.
     pub fn projecting_fractions(self, a: &Arena) -> Vec<f64> {
-        let l = self.projecting_lengths(a);
+        let mut l = self.projecting_lengths(a);
         let total: f64 = l.iter().sum();
-        l.iter().map(|x| x / total).collect()
+        l.iter_mut().for_each(|x| *x /= total);
+        l
     }
 
     /// Reverse the order of the edges (not the edges themselves); with
@@ -277,13 +282,17 @@ impl InterfaceId {
         let d = a.iface(self);
         let mut lo = Vec3::splat(f64::INFINITY);
         let mut hi = Vec3::splat(f64::NEG_INFINITY);
+        let mut seq = EdgeSeq(Vec::with_capacity(1));
         for (&e, &p) in d.edges.iter().zip(d.panels.iter()) {
-            let seq = EdgeSeq(vec![e]);
-            for v in seq.linearized_positions(a) {
-                let w = p.point_to_3d(a, v);
-                lo = lo.min(w);
-                hi = hi.max(w);
-            }
+            seq.clear();
+            seq.push(e);
+            seq.with_linearized_positions(a, None, |pts| {
+                for &v in pts {
+                    let w = p.point_to_3d(a, v);
+                    lo = lo.min(w);
+                    hi = hi.max(w);
+                }
+            });
         }
         (lo, hi)
     }

@@ -306,26 +306,28 @@ impl PanelId {
 
     /// 2D bounding box of the linearised loop.
     pub fn bbox(self, a: &Arena) -> (Vec2, Vec2) {
-        let pts = self.edges(a).linearized_positions(a);
-        let (mut lo, mut hi) = (pts[0], pts[0]);
-        for p in &pts {
-            lo = lo.min(*p);
-            hi = hi.max(*p);
-        }
-        (lo, hi)
+        self.edges(a).with_linearized_positions(a, None, |pts| {
+            let (mut lo, mut hi) = (pts[0], pts[0]);
+            for p in pts {
+                lo = lo.min(*p);
+                hi = hi.max(*p);
+            }
+            (lo, hi)
+        })
     }
 
     /// 3D bounding box of the linearised loop.
     pub fn bbox3d(self, a: &Arena) -> (Vec3, Vec3) {
-        let pts = self.edges(a).linearized_positions(a);
-        let mut lo = Vec3::splat(f64::INFINITY);
-        let mut hi = Vec3::splat(f64::NEG_INFINITY);
-        for p in pts {
-            let w = self.point_to_3d(a, p);
-            lo = lo.min(w);
-            hi = hi.max(w);
-        }
-        (lo, hi)
+        self.edges(a).with_linearized_positions(a, None, |pts| {
+            let mut lo = Vec3::splat(f64::INFINITY);
+            let mut hi = Vec3::splat(f64::NEG_INFINITY);
+            for &p in pts {
+                let w = self.point_to_3d(a, p);
+                lo = lo.min(w);
+                hi = hi.max(w);
+            }
+            (lo, hi)
+        })
     }
 
     /// Length of the panel: its bounding-box height, or the length of its length

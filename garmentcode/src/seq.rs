@@ -307,12 +307,36 @@ impl EdgeSeq {
     /// As [`EdgeSeq::linearized_positions`] with `n` interior points on every edge
     /// (straight ones included) when given.
     pub fn linearized_positions_n(&self, a: &Arena, n: Option<usize>) -> Vec<Vec2> {
+        let mut out = Vec::new();
+        self.linearized_positions_into(a, n, &mut out);
+        out
+    }
+
+    /// Calls `f` with [`EdgeSeq::linearized_positions_n`], in a buffer reused
+    /// from call to call (bounding boxes and normals are computed many times
+    /// while a garment is built and only read the points).
+    pub(crate) fn with_linearized_positions<R>(&self, a: &Arena, n: Option<usize>, f: impl FnOnce(&[Vec2]) -> R) -> R {
+        thread_local! {
+            static SCRATCH: std::cell::Cell<Vec<Vec2>> = const { std::cell::Cell::new(Vec::new()) };
+        }
+        // Taken out while in use, so a nested call simply gets a new buffer.
+        let mut buf = SCRATCH.take();
+        buf.clear();
+        self.linearized_positions_into(a, n, &mut buf);
+        let r = f(&buf);
+        SCRATCH.set(buf);
+        r
+    }
+
+    /// [`EdgeSeq::linearized_positions_n`] into `out` (emptied first).
+    fn linearized_positions_into(&self, a: &Arena, n: Option<usize>, out: &mut Vec<Vec2>) {
+        out.clear();
         if self.0.is_empty() {
-            return Vec::new();
+            return;
         }
         // Sized once: growing by doubling cost several reallocations per call.
         let points = |e: EdgeId| n.unwrap_or(if a.curve(e) == Curve::Line { 0 } else { 9 });
-        let mut out = Vec::with_capacity(1 + self.0.iter().map(|&e| 2 + points(e)).sum::<usize>());
+        out.reserve(1 + self.0.iter().map(|&e| 2 + points(e)).sum::<usize>());
         let first = a.start(self.0[0]);
         let mut last_id = Some(first);
         out.push(a.pos(first));
@@ -321,37 +345,37 @@ impl EdgeSeq {
             if last_id != Some(s) {
                 out.push(a.pos(s));
             }
-            a.linearized_points_into(e, n, &mut out);
+            a.linearized_points_into(e, n, out);
             out.push(a.pos(t));
             last_id = Some(t);
         }
         if out.len() > 1 && last_id == Some(first) {
             out.pop();
         }
-        out
     }
 
     /// The bounding box of the linearised sequence and the reference's "bounding box
     /// points" (the vertices lying on it, in order; completed to three points when
     /// only two are found), used to estimate panel normals.
     pub fn bbox_points(&self, a: &Arena) -> ([f64; 4], Vec<Vec2>) {
-        let verts = self.linearized_positions(a);
-        let mut mi = verts[0];
-        let mut ma = verts[0];
-        for v in &verts {
-            mi = mi.min(*v);
-            ma = ma.max(*v);
-        }
-        let mut b: Vec<Vec2> =
-            verts.iter().copied().filter(|v| v.x == mi.x || v.x == ma.x || v.y == mi.y || v.y == ma.y).collect();
-        if b.len() == 2 {
-            if !b.contains(&mi) {
-                b = vec![b[0], mi, b[1]];
-            } else {
-                b = vec![b[0], Vec2::new(mi.x, ma.y), b[1]];
+        self.with_linearized_positions(a, None, |verts| {
+            let mut mi = verts[0];
+            let mut ma = verts[0];
+            for v in verts {
+                mi = mi.min(*v);
+                ma = ma.max(*v);
             }
-        }
-        ([mi.x, ma.x, mi.y, ma.y], b)
+            let mut b: Vec<Vec2> =
+                verts.iter().copied().filter(|v| v.x == mi.x || v.x == ma.x || v.y == mi.y || v.y == ma.y).collect();
+            if b.len() == 2 {
+                if !b.contains(&mi) {
+                    b = vec![b[0], mi, b[1]];
+                } else {
+                    b = vec![b[0], Vec2::new(mi.x, ma.y), b[1]];
+                }
+            }
+            ([mi.x, ma.x, mi.y, ma.y], b)
+        })
     }
 }
 
