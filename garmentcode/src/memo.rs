@@ -49,13 +49,23 @@ thread_local! {
     static EDGE_POINTS: Table<EdgeKey> = RefCell::default();
 }
 
+/// Entries kept at most: a garment needs a few dozen; a program that builds
+/// garments without ever clearing its arenas must not grow the table forever.
+const CAPACITY: usize = 4096;
+
 /// Calls `f` with the memoised linearisation points for `key`, computing them
-/// with `make` once.
+/// with `make` once (outside any borrow of the table).
 pub(crate) fn edge_points<R>(key: EdgeKey, make: impl FnOnce() -> Vec<Vec2>, f: impl FnOnce(&[Vec2]) -> R) -> R {
     EDGE_POINTS.with(|cache| {
+        if let Some(pts) = cache.borrow().get(&key) {
+            return f(pts);
+        }
+        let pts = make();
         let mut cache = cache.borrow_mut();
-        let pts = cache.entry(key).or_insert_with(make);
-        f(pts)
+        if cache.len() >= CAPACITY {
+            cache.clear();
+        }
+        f(cache.entry(key).or_insert(pts))
     })
 }
 
