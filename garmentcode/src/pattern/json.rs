@@ -26,9 +26,9 @@ impl Pattern {
     pub fn to_json(&self) -> Result<String> {
         let mut w = Writer { out: String::with_capacity(64 * 1024), depth: 0 };
         w.open('{');
-        w.key("pattern");
+        w.field("pattern");
         w.open('{');
-        w.key("panels");
+        w.field("panels");
         if self.panels.is_empty() {
             w.out.push_str("{}");
         } else {
@@ -41,7 +41,7 @@ impl Pattern {
             w.close('}');
         }
         w.sep(1);
-        w.key("stitches");
+        w.field("stitches");
         if self.stitches.is_empty() {
             w.out.push_str("[]");
         } else {
@@ -52,16 +52,16 @@ impl Pattern {
                 for (k, side) in s.sides.iter().enumerate() {
                     w.sep(k);
                     w.open('{');
-                    w.key("panel");
+                    w.field("panel");
                     w.string(&side.panel);
                     w.sep(1);
-                    w.key("edge");
+                    w.field("edge");
                     w.index(side.edge);
                     w.close('}');
                 }
                 if s.right_wrong {
                     w.sep(2);
-                    w.string("right_wrong");
+                    w.literal("right_wrong");
                 }
                 w.close(']');
             }
@@ -69,30 +69,30 @@ impl Pattern {
         }
         if let Some(order) = &self.panel_order {
             w.sep(2);
-            w.key("panel_order");
+            w.field("panel_order");
             w.string_list(order);
         }
         w.close('}');
         w.sep(1);
-        w.key("parameters");
+        w.field("parameters");
         w.value(&self.parameters)?;
         w.sep(2);
-        w.key("parameter_order");
+        w.field("parameter_order");
         w.value(&self.parameter_order)?;
         w.sep(3);
-        w.key("properties");
+        w.field("properties");
         w.open('{');
         let pr = &self.properties;
-        w.key("curvature_coords");
+        w.field("curvature_coords");
         w.string(&pr.curvature_coords);
         w.sep(1);
-        w.key("normalize_panel_translation");
+        w.field("normalize_panel_translation");
         w.out.push_str(if pr.normalize_panel_translation { "true" } else { "false" });
         w.sep(2);
-        w.key("normalized_edge_loops");
+        w.field("normalized_edge_loops");
         w.out.push_str(if pr.normalized_edge_loops { "true" } else { "false" });
         w.sep(3);
-        w.key("units_in_meter");
+        w.field("units_in_meter");
         if pr.units_in_meter.fract() == 0.0 && pr.units_in_meter.abs() < 1e15 {
             let _ = write!(w.out, "{}", pr.units_in_meter as i64);
         } else {
@@ -135,13 +135,13 @@ impl Pattern {
 
 fn write_panel(w: &mut Writer, p: &PanelSpec) -> Result<()> {
     w.open('{');
-    w.key("translation");
+    w.field("translation");
     w.float_list(&p.translation)?;
     w.sep(1);
-    w.key("rotation");
+    w.field("rotation");
     w.float_list(&p.rotation)?;
     w.sep(2);
-    w.key("vertices");
+    w.field("vertices");
     if p.vertices.is_empty() {
         w.out.push_str("[]");
     } else {
@@ -153,7 +153,7 @@ fn write_panel(w: &mut Writer, p: &PanelSpec) -> Result<()> {
         w.close(']');
     }
     w.sep(3);
-    w.key("edges");
+    w.field("edges");
     if p.edges.is_empty() {
         w.out.push_str("[]");
     } else {
@@ -161,7 +161,7 @@ fn write_panel(w: &mut Writer, p: &PanelSpec) -> Result<()> {
         for (i, e) in p.edges.iter().enumerate() {
             w.sep(i);
             w.open('{');
-            w.key("endpoints");
+            w.field("endpoints");
             w.open('[');
             w.index(e.endpoints[0]);
             w.sep(1);
@@ -169,27 +169,27 @@ fn write_panel(w: &mut Writer, p: &PanelSpec) -> Result<()> {
             w.close(']');
             if let Some(l) = &e.label {
                 w.sep(1);
-                w.key("label");
+                w.field("label");
                 w.string(l);
             }
             if let Some(c) = &e.curvature {
                 w.sep(1);
-                w.key("curvature");
+                w.field("curvature");
                 w.open('{');
-                w.key("type");
+                w.field("type");
                 match c {
                     Curvature::Quadratic(cp) => {
-                        w.string("quadratic");
+                        w.literal("quadratic");
                         w.sep(1);
-                        w.key("params");
+                        w.field("params");
                         w.open('[');
                         w.float_list(cp)?;
                         w.close(']');
                     }
                     Curvature::Cubic(c1, c2) => {
-                        w.string("cubic");
+                        w.literal("cubic");
                         w.sep(1);
-                        w.key("params");
+                        w.field("params");
                         w.open('[');
                         w.float_list(c1)?;
                         w.sep(1);
@@ -197,9 +197,9 @@ fn write_panel(w: &mut Writer, p: &PanelSpec) -> Result<()> {
                         w.close(']');
                     }
                     Curvature::Circle { radius, large_arc, right } => {
-                        w.string("circle");
+                        w.literal("circle");
                         w.sep(1);
-                        w.key("params");
+                        w.field("params");
                         w.open('[');
                         w.float(*radius)?;
                         w.sep(1);
@@ -217,7 +217,7 @@ fn write_panel(w: &mut Writer, p: &PanelSpec) -> Result<()> {
     }
     if let Some(l) = &p.label {
         w.sep(4);
-        w.key("label");
+        w.field("label");
         w.string(l);
     }
     w.close('}');
@@ -257,13 +257,32 @@ impl Writer {
     /// Separator before item `i` of a container (nothing before the first).
     fn sep(&mut self, i: usize) {
         if i > 0 {
-            self.out.push(',');
-            self.newline();
+            /// A comma, a newline and the indentation (one copy).
+            const SEP: &str = ",\n                                        ";
+            match SEP.get(..2 + 2 * self.depth) {
+                Some(s) => self.out.push_str(s),
+                None => {
+                    self.out.push(',');
+                    self.newline();
+                }
+            }
         }
     }
     fn key(&mut self, k: &str) {
         self.string(k);
         self.out.push_str(": ");
+    }
+    /// A key that is one of this writer's own names (plain ASCII: no escapes).
+    fn field(&mut self, k: &'static str) {
+        self.out.push('"');
+        self.out.push_str(k);
+        self.out.push_str("\": ");
+    }
+    /// A string value that is one of this writer's own names.
+    fn literal(&mut self, s: &'static str) {
+        self.out.push('"');
+        self.out.push_str(s);
+        self.out.push('"');
     }
     fn string(&mut self, s: &str) {
         // Names and labels are plain ASCII and need no escapes; anything else goes
