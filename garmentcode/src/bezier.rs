@@ -131,59 +131,78 @@ impl Bezier {
         }
     }
 
-    /// 16-point Gauss–Legendre on `[a, b]`. The speed is a plain square root, not
-    /// `hypot`: the quadrature is far less exact than the last bit, and this is the
-    /// hot loop of every length computation.
+    /// 16-point Gauss–Legendre on each of the `K` intervals `[a, b]`. The speed is a
+    /// plain square root, not `hypot`: the quadrature is far less exact than the
+    /// last bit, and this is the hot loop of every length computation.
     ///
-    /// The 16 speeds are computed first (independent, so the compiler evaluates
-    /// them two at a time) and then summed in the quadrature's order; the operations
-    /// on each value are those of [`Bezier::derivative`] and [`norm`].
-    fn gl16(&self, a: f64, b: f64) -> f64 {
-        let half = 0.5 * (b - a);
-        let mid = 0.5 * (a + b);
-        let mut t = [0.0; 16];
-        for i in 0..8 {
-            let dx = half * GL16_X[i];
-            t[2 * i] = mid - dx;
-            t[2 * i + 1] = mid + dx;
+    /// All `16 K` speeds are computed first (independent, so the compiler evaluates
+    /// them two at a time and overlaps the square roots) and then each interval's
+    /// are summed in the quadrature's order; the operations on each value are those
+    /// of [`Bezier::derivative`] and [`norm`], so every interval's result is what a
+    /// separate computation gives.
+    fn gl16<const K: usize>(&self, intervals: [(f64, f64); K]) -> [f64; K] {
+        let mut t = [[0.0; 16]; K];
+        for (ts, &(a, b)) in t.iter_mut().zip(&intervals) {
+            let half = 0.5 * (b - a);
+            let mid = 0.5 * (a + b);
+            for i in 0..8 {
+                let dx = half * GL16_X[i];
+                ts[2 * i] = mid - dx;
+                ts[2 * i + 1] = mid + dx;
+            }
         }
-        let mut speed = [0.0; 16];
+        let mut speed = [[0.0; 16]; K];
         match *self {
             Bezier::Quadratic([p0, p1, p2]) => {
                 let (d0, d1) = (p1 - p0, p2 - p1);
-                for k in 0..16 {
-                    let d = 2.0 * (d0 * (1.0 - t[k]) + d1 * t[k]);
-                    speed[k] = (d.x * d.x + d.y * d.y).sqrt();
+                for (sp, ts) in speed.iter_mut().zip(&t) {
+                    for k in 0..16 {
+                        let d = 2.0 * (d0 * (1.0 - ts[k]) + d1 * ts[k]);
+                        sp[k] = (d.x * d.x + d.y * d.y).sqrt();
+                    }
                 }
             }
             Bezier::Cubic([p0, p1, p2, p3]) => {
                 let (d0, d1, d2) = (p1 - p0, p2 - p1, p3 - p2);
-                for k in 0..16 {
-                    let tc = 1.0 - t[k];
-                    let d = 3.0 * (d0 * tc * tc + 2.0 * d1 * tc * t[k] + d2 * t[k] * t[k]);
-                    speed[k] = (d.x * d.x + d.y * d.y).sqrt();
+                for (sp, ts) in speed.iter_mut().zip(&t) {
+                    for k in 0..16 {
+                        let tc = 1.0 - ts[k];
+                        let d = 3.0 * (d0 * tc * tc + 2.0 * d1 * tc * ts[k] + d2 * ts[k] * ts[k]);
+                        sp[k] = (d.x * d.x + d.y * d.y).sqrt();
+                    }
                 }
             }
         }
-        let mut s = 0.0;
-        for i in 0..8 {
-            s += GL16_W[i] * (speed[2 * i] + speed[2 * i + 1]);
+        let mut out = [0.0; K];
+        for ((o, sp), &(a, b)) in out.iter_mut().zip(&speed).zip(&intervals) {
+            let mut s = 0.0;
+            for i in 0..8 {
+                s += GL16_W[i] * (sp[2 * i] + sp[2 * i + 1]);
+            }
+            *o = s * (0.5 * (b - a));
         }
-        s * half
+        out
     }
 
+    /// Adaptive quadrature: the whole interval and its halves are integrated (in
+    /// one pass), and halves whose sum disagrees with their whole are split again.
     fn adaptive_length(&self, t0: f64, t1: f64) -> f64 {
         if t0 == t1 {
             return 0.0;
         }
-        let whole = self.gl16(t0, t1);
-        self.adaptive_step(t0, t1, whole, 0)
+        let m = 0.5 * (t0 + t1);
+        let [whole, left, right] = self.gl16([(t0, t1), (t0, m), (m, t1)]);
+        self.adaptive_finish(t0, t1, whole, left, right, 0)
     }
 
     fn adaptive_step(&self, a: f64, b: f64, whole: f64, depth: u32) -> f64 {
         let m = 0.5 * (a + b);
-        let left = self.gl16(a, m);
-        let right = self.gl16(m, b);
+        let [left, right] = self.gl16([(a, m), (m, b)]);
+        self.adaptive_finish(a, b, whole, left, right, depth)
+    }
+
+    fn adaptive_finish(&self, a: f64, b: f64, whole: f64, left: f64, right: f64, depth: u32) -> f64 {
+        let m = 0.5 * (a + b);
         let both = left + right;
         if depth >= 24 || (both - whole).abs() <= 1e-13 * whole.abs().max(1e-3) {
             return both;
