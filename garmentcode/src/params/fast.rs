@@ -50,9 +50,9 @@ fn design_from_values<D: Params>(values: &[Option<Value>], space: &DesignSpace) 
     // As `from_values`: every parameter is set, to its value or the space's default.
     let mut d = D::defaults();
     let mut keys: Vec<&str> = Vec::with_capacity(8);
-    for (spec, v) in space.params().iter().zip(values) {
+    for (i, (spec, v)) in space.params().iter().zip(values).enumerate() {
         keys.clear();
-        keys.extend(spec.path.split('.'));
+        keys.extend(space.keys(i).iter().map(String::as_str));
         d.set_value(&keys, v.as_ref().unwrap_or(&spec.default)).ok()?;
     }
     Some(d)

@@ -15,6 +15,9 @@ pub struct DesignSpace {
     /// Every parameter's path and every group's path (a proper prefix of some
     /// parameter's path, at a dot), for lookups while reading design files.
     index: HashMap<String, Entry>,
+    /// Every parameter's path split at its dots (the keys `Params::set_value`
+    /// takes), so that reading a design does not split them again.
+    keys: Vec<Vec<String>>,
     /// The space's file layout, for reading the files written for it quickly.
     skeleton: SkeletonSlot,
 }
@@ -68,7 +71,8 @@ impl DesignSpace {
                 index.entry(p.path[..dot].to_string()).or_insert(Entry::Group);
             }
         }
-        DesignSpace { params, index, skeleton: SkeletonSlot::default() }
+        let keys = params.iter().map(|p| p.path.split('.').map(str::to_string).collect()).collect();
+        DesignSpace { params, index, keys, skeleton: SkeletonSlot::default() }
     }
 
     /// The space's file layout with holes for the values, from the second read on.
@@ -92,6 +96,11 @@ impl DesignSpace {
     /// A parameter by dotted path.
     pub fn get(&self, path: &str) -> Option<&ParamSpec> {
         self.index_of(path).map(|i| &self.params[i])
+    }
+
+    /// The keys of parameter `i`'s path.
+    pub(crate) fn keys(&self, i: usize) -> &[String] {
+        &self.keys[i]
     }
 
     /// Index of the parameter at `path` in [`DesignSpace::params`].
