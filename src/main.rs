@@ -1,5 +1,16 @@
 //! `garmentcode`: build, check, render and sample GarmentCode sewing patterns.
 
+/// `print!` that ends the program quietly when stdout is closed (`| head`)
+/// instead of panicking.
+macro_rules! out {
+    ($($t:tt)*) => { $crate::write_stdout(&format!($($t)*)) };
+}
+
+/// `println!` with the same closed-pipe handling as [`out!`].
+macro_rules! outln {
+    ($($t:tt)*) => { $crate::write_stdout(&format!("{}\n", format_args!($($t)*))) };
+}
+
 mod args;
 mod commands;
 mod output;
@@ -58,7 +69,7 @@ fn main() {
         "render" => commands::render::run(args),
         "compare" => commands::compare::run(args),
         "help" | "--help" | "-h" => {
-            print!("{HELP}");
+            out!("{HELP}");
             Ok(0)
         }
         other => Err(CliError::Usage(format!("unknown command '{other}' (see `garmentcode help`)"))),
@@ -77,5 +88,19 @@ fn main() {
             eprintln!("error: {m}");
             std::process::exit(1);
         }
+    }
+}
+
+/// Write to stdout; a closed pipe ends the program with success (the reader has
+/// what it wanted), any other failure with an error.
+fn write_stdout(text: &str) {
+    use std::io::Write;
+    let mut stdout = std::io::stdout().lock();
+    if let Err(e) = stdout.write_all(text.as_bytes()).and_then(|()| stdout.flush()) {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            std::process::exit(0);
+        }
+        eprintln!("error: cannot write to stdout: {e}");
+        std::process::exit(1);
     }
 }

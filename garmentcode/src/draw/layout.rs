@@ -428,8 +428,8 @@ fn place(panel: &PanelSpec) -> Result<PlacedPanel> {
     let mut segments = Vec::with_capacity(panel.edges.len());
     for (k, e) in panel.edges.iter().enumerate() {
         let [i, j] = e.endpoints;
-        if i >= local.len() || j >= local.len() {
-            return Err(bad(&format!("edge {k} refers to a missing vertex")));
+        if let Some(v) = [i, j].into_iter().find(|&v| v >= local.len()) {
+            return Err(bad(&format!("edge {k} refers to vertex {v}, but the panel has {} vertices", local.len())));
         }
         let (s, t) = (local[i], local[j]);
         // Relative control points with y negated: the flip mirrors the edge frame.

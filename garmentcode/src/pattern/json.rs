@@ -334,9 +334,18 @@ impl Writer {
 
 /// A float as Python's `repr` writes it (shortest round-trip digits, scientific
 /// notation below 1e-4 and from 1e16 on); `-0.0` is written `0.0`.
+///
+/// Non-finite values are written as Python's `repr` does (`nan`, `inf`, `-inf`);
+/// they are never valid in a pattern file, but they appear in error messages.
 pub fn python_float_repr(x: f64) -> String {
     if x == 0.0 {
         return "0.0".to_string();
+    }
+    if x.is_nan() {
+        return "nan".to_string();
+    }
+    if x.is_infinite() {
+        return if x > 0.0 { "inf" } else { "-inf" }.to_string();
     }
     let sci = format!("{x:e}");
     let (mantissa, exp) = sci.split_once('e').expect("LowerExp has an exponent");
