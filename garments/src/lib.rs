@@ -21,6 +21,7 @@ pub mod design;
 pub mod godet;
 pub mod meta;
 pub mod pants;
+pub mod sample;
 pub mod shapes;
 pub mod skirt_levels;
 pub mod skirt_paneled;
