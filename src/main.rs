@@ -50,6 +50,22 @@ COMMANDS:
         the reference fits chaotically, are judged by how they sew). With --cases,
         every case folder (specification.json or error.txt) of EXPECTED_DIR
         against the same folder in ACTUAL_DIR. Exit 0 when all pass, else 1.
+    sample --n N --seed S --out DIR [--design-space FILE.yaml] [--bodies NAME,NAME|DIR]
+           [--jobs J] [--shard I/K] [--formats json,svg,png]
+        A dataset of N random garments: DIR/rand_0000000 ... each with
+        rand_NNNNNNN_specification.json (and _pattern.svg/.png as asked),
+        design_params.yaml, body_measurements.yaml and sample_info.json, and
+        DIR/dataset_properties.yaml (types, rejections by reason, time).
+        Sample i depends on (S, i) alone: the same with any --jobs (default: all
+        cores) and in any shard. Designs failing the reference's filters are
+        drawn again (up to 100 times). A rerun into DIR skips finished samples.
+        --design-space: a design file whose ranges and probabilities replace
+        the built-in ones. --bodies: built-in names or body files, or a folder of
+        body files (default mean_all). --shard I/K: only the samples i with
+        i % K == I (0 <= I < K). --formats: default json.
+    sample --seed S --replay INDEX[:ATTEMPT] --out DIR [--design-space ...] [--bodies ...]
+        Rebuild one sample, or one attempt of it (also a rejected one), into DIR
+        as `build` would, and print the filters' verdict.
     help
         Show this text.
 ";
@@ -68,6 +84,7 @@ fn main() {
         "check" => commands::check::run(args),
         "render" => commands::render::run(args),
         "compare" => commands::compare::run(args),
+        "sample" => commands::sample::run(args),
         "help" | "--help" | "-h" => {
             out!("{HELP}");
             Ok(0)
@@ -84,7 +101,7 @@ fn main() {
             eprintln!("error: {m}");
             std::process::exit(2);
         }
-        Err(CliError::Rejected(m)) => {
+        Err(CliError::Rejected(m)) | Err(CliError::Failed(m)) => {
             eprintln!("error: {m}");
             std::process::exit(1);
         }

@@ -4,6 +4,7 @@ pub mod build;
 pub mod check;
 pub mod compare;
 pub mod render;
+pub mod sample;
 pub mod schema;
 
 use crate::args::UsageError;
@@ -19,6 +20,8 @@ pub enum CliError {
     Input(String),
     /// A valid design rejected by a requested check (exit 1).
     Rejected(String),
+    /// Work started but did not complete (exit 1).
+    Failed(String),
 }
 
 impl From<UsageError> for CliError {
