@@ -245,13 +245,7 @@ impl Edge {
             }
             _ => {
                 let rel = self.relative_bezier().expect("Bézier edge");
-                let len = rel.length();
-                interior_params(n + 1)
-                    .map(|f| {
-                        let t = rel.inverse_length(f * len).unwrap_or(f);
-                        self.to_abs(rel.point(t))
-                    })
-                    .collect()
+                arc_length_params(self.curve, n, |ts| ts.iter().map(|&t| self.to_abs(rel.point(t))).collect())
             }
         }
     }
@@ -340,6 +334,54 @@ impl Edge {
     pub fn rotated(&self, angle: f64) -> Edge {
         Edge { end: self.start + rotate2d(self.end - self.start, angle), ..*self }
     }
+}
+
+
+/// Memo of Bézier arc-length parameters, per thread: the curve parameters of `n`
+/// points at equal arc-length steps depend only on the relative control points
+/// (unchanged by the moves, rotations and mirrors that placement applies), and
+/// placement re-linearises the same curves many times (every `autonorm`). Finding
+/// them (Newton on adaptive quadrature) is most of the cost of building a
+/// garment; the memo returns the very same numbers, only sooner.
+mod arc_memo {
+    use std::cell::RefCell;
+    use std::collections::HashMap;
+
+    /// Control-point bits, point count and degree.
+    pub type Key = [u64; 6];
+
+    /// Entries kept before the memo starts over (a garment needs a few hundred).
+    pub const CAPACITY: usize = 4096;
+
+    thread_local! {
+        pub static MEMO: RefCell<HashMap<Key, Vec<f64>>> = RefCell::new(HashMap::new());
+    }
+}
+
+/// Calls `f` with the parameters of the `n` interior points at equal arc-length
+/// steps of a Bézier edge's relative curve (computed once per curve and thread).
+fn arc_length_params<R>(curve: Curve, n: usize, f: impl FnOnce(&[f64]) -> R) -> R {
+    let (key, rel): (arc_memo::Key, Bezier) = match curve {
+        Curve::Quadratic(c) => ([c.x.to_bits(), c.y.to_bits(), 0, 0, n as u64, 2], Bezier::Quadratic([Vec2::ZERO, c, Vec2::X])),
+        Curve::Cubic(c1, c2) => {
+            ([c1.x.to_bits(), c1.y.to_bits(), c2.x.to_bits(), c2.y.to_bits(), n as u64, 3], Bezier::Cubic([Vec2::ZERO, c1, c2, Vec2::X]))
+        }
+        _ => unreachable!("only Bézier edges have arc-length parameters"),
+    };
+    arc_memo::MEMO.with(|memo| {
+        let mut memo = memo.borrow_mut();
+        if let Some(ts) = memo.get(&key) {
+            return f(ts);
+        }
+        let len = rel.length();
+        let ts: Vec<f64> = interior_params(n + 1).map(|u| rel.inverse_length(u * len).unwrap_or(u)).collect();
+        let out = f(&ts);
+        if memo.len() >= arc_memo::CAPACITY {
+            memo.clear();
+        }
+        memo.insert(key, ts);
+        out
+    })
 }
 
 #[cfg(test)]
