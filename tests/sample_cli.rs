@@ -80,18 +80,19 @@ fn assert_whole(dir: &Path, n_files: usize) {
 fn threads_do_not_change_the_dataset() {
     let dir = scratch("threads");
     let (one, two) = (dir.join("one"), dir.join("two"));
-    sample_ok(&["--n", "24", "--seed", "3", "--out", s(&one), "--jobs", "1", "--formats", "json,svg"]);
-    sample_ok(&["--n", "24", "--seed", "3", "--out", s(&two), "--jobs", "2", "--formats", "json,svg"]);
+    sample_ok(&["--n", "24", "--seed", "3", "--out", s(&one), "--jobs", "1", "--formats", "json,svg,png"]);
+    sample_ok(&["--n", "24", "--seed", "3", "--out", s(&two), "--jobs", "2", "--formats", "png,svg,json"]);
     let (a, b) = (tree(&one), tree(&two));
     assert_eq!(a.keys().filter(|k| k.ends_with("sample_info.json")).count(), 24);
     assert!(a.contains_key("rand_0000000/rand_0000000_specification.json"));
     assert!(a.contains_key("rand_0000023/rand_0000023_pattern.svg"));
+    assert!(a.contains_key("rand_0000023/rand_0000023_pattern.png"));
     assert!(a.contains_key("dataset_properties.yaml"));
     assert_eq!(a.keys().collect::<Vec<_>>(), b.keys().collect::<Vec<_>>());
     for (k, v) in &a {
         assert!(*v == b[k], "{k} differs between --jobs 1 and --jobs 2");
     }
-    assert_whole(&one, 5);
+    assert_whole(&one, 6);
     // Another seed, another dataset.
     let other = dir.join("other");
     sample_ok(&["--n", "2", "--seed", "4", "--out", s(&other)]);
@@ -176,13 +177,19 @@ fn an_interrupted_run_leaves_only_whole_samples() {
     let dir = scratch("interrupt");
     let (cut, full) = (dir.join("cut"), dir.join("full"));
     let mut child = Command::new(BIN)
-        .args(["sample", "--n", "300", "--seed", "2", "--jobs", "2", "--out", s(&cut)])
+        .args(["sample", "--n", "1000", "--seed", "2", "--jobs", "2", "--out", s(&cut)])
         .stderr(std::process::Stdio::null())
         .spawn()
         .unwrap();
-    std::thread::sleep(Duration::from_millis(400));
-    let _ = child.kill(); // SIGKILL: no chance to clean up
+    // Kill it (SIGKILL: no chance to clean up) once it has made a few samples.
+    let started = std::time::Instant::now();
+    while fs::read_dir(&cut).map(|d| d.count()).unwrap_or(0) < 10 && started.elapsed() < Duration::from_secs(60) {
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    let _ = child.kill();
     child.wait().unwrap();
+    let made = fs::read_dir(&cut).unwrap().filter(|e| e.as_ref().unwrap().file_name().to_string_lossy().starts_with("rand_")).count();
+    assert!(made < 1000, "the run was not interrupted");
     for e in fs::read_dir(&cut).unwrap() {
         let path = e.unwrap().path();
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
@@ -190,9 +197,9 @@ fn an_interrupted_run_leaves_only_whole_samples() {
             assert_eq!(fs::read_dir(&path).unwrap().count(), 4, "{name} is partial");
         }
     }
-    sample_ok(&["--n", "300", "--seed", "2", "--out", s(&cut)]);
+    sample_ok(&["--n", "1000", "--seed", "2", "--out", s(&cut)]);
     assert_whole(&cut, 4);
-    sample_ok(&["--n", "300", "--seed", "2", "--out", s(&full)]);
+    sample_ok(&["--n", "1000", "--seed", "2", "--out", s(&full)]);
     assert_eq!(samples(&cut), samples(&full));
 }
 
