@@ -16,10 +16,12 @@
 mod io;
 mod sample;
 mod space;
+mod writer;
 
 pub use io::{DesignError, from_values, read_design, read_design_values, write_design, write_values};
 pub use sample::{Sampler, sample_rng};
 pub use space::DesignSpace;
+pub use writer::DesignWriter;
 
 use std::fmt;
 

@@ -40,6 +40,7 @@ mod scanner;
 use std::fmt;
 
 pub use emitter::to_string;
+pub(crate) use emitter::float_repr;
 
 /// A YAML value as PyYAML `safe_load` would build it (restricted to the types
 /// the supported subset can produce).

@@ -217,7 +217,7 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
     let n = opts.n.expect("--n is required without --replay");
     prepare_out(&opts.out)?;
 
-    let settings = Settings { sampler: &sampler, fingerprint: store::fingerprint(&sampler), formats: opts.formats };
+    let settings = Settings::new(&sampler, opts.formats);
     let (shard_i, shard_k) = opts.shard.unwrap_or((0, 1));
     let wanted = |i: u64| i % shard_k == shard_i;
     let existing = store::scan(&opts.out, &settings, n, wanted).map_err(CliError::Input)?;

@@ -3,8 +3,8 @@
 //! each sample (`sample_info.json`) that lets a rerun skip finished samples and
 //! still summarise the whole dataset.
 
-use garmentcode::Choice;
-use garmentcode::params::write_design;
+use garmentcode::{Choice, Params};
+use garmentcode::params::DesignWriter;
 use garments::sample::{DatasetSampler, GarmentType, Outcome, Reason, Sample, sample_name};
 use serde_json::{Value, json};
 use std::fs;
@@ -99,11 +99,28 @@ pub struct Settings<'a> {
     /// FNV-1a hash of the design space and the bodies.
     pub fingerprint: String,
     pub formats: Formats,
+    /// Writes `design_params.yaml` (as `write_design` does, faster).
+    pub writer: DesignWriter,
+    /// `body_measurements.yaml` of each body, straight and with legs apart.
+    pub body_files: Vec<[String; 2]>,
+}
+
+impl<'a> Settings<'a> {
+    /// Settings of a run; renders what every sample shares once.
+    pub fn new(sampler: &'a DatasetSampler, formats: Formats) -> Settings<'a> {
+        let mut with_pants = garments::Design::defaults();
+        with_pants.meta.bottom = Some(garments::design::BottomKind::Pants);
+        let mut without = garments::Design::defaults();
+        without.meta.bottom = None;
+        let body_files =
+            (0..sampler.bodies().len()).map(|b| [sampler.body_for(b, &without).to_yaml(), sampler.body_for(b, &with_pants).to_yaml()]).collect();
+        Settings { sampler, fingerprint: fingerprint(sampler), formats, writer: DesignWriter::new(sampler.space()), body_files }
+    }
 }
 
 /// FNV-1a (64 bit) of the design space and the bodies: a stable fingerprint of
 /// everything besides the seed that decides the samples.
-pub fn fingerprint(sampler: &DatasetSampler) -> String {
+fn fingerprint(sampler: &DatasetSampler) -> String {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
     let mut eat = |s: &str| {
         for b in s.bytes().chain([0xff]) {
@@ -179,8 +196,9 @@ fn files_of(s: &Settings, sample: &Sample, record: &Record) -> Result<Vec<(Strin
     if s.formats.png {
         files.push((format!("{name}_pattern.png"), garmentcode::draw::to_png(pattern, &opts).map_err(|e| fail("PNG drawing", e))?));
     }
-    files.push(("design_params.yaml".into(), write_design(&sample.design, s.sampler.space()).into_bytes()));
-    files.push(("body_measurements.yaml".into(), s.sampler.body_for(sample.body, &sample.design).to_yaml().into_bytes()));
+    files.push(("design_params.yaml".into(), s.writer.write(&sample.design).into_bytes()));
+    let pants = sample.design.meta.bottom == Some(garments::design::BottomKind::Pants);
+    files.push(("body_measurements.yaml".into(), s.body_files[sample.body][usize::from(pants)].clone().into_bytes()));
     files.push((INFO.into(), info_json(s, record).into_bytes()));
     Ok(files)
 }
@@ -190,8 +208,13 @@ fn files_of(s: &Settings, sample: &Sample, record: &Record) -> Result<Vec<(Strin
 fn write_folder(dir: &Path, name: &str, files: &[(String, Vec<u8>)]) -> io::Result<()> {
     let tmp = dir.join(tmp_name(name));
     let target = dir.join(name);
-    let _ = fs::remove_dir_all(&tmp);
-    let result = fs::create_dir(&tmp)
+    let created = fs::create_dir(&tmp).or_else(|e| {
+        if e.kind() != io::ErrorKind::AlreadyExists {
+            return Err(e);
+        }
+        fs::remove_dir_all(&tmp).and_then(|_| fs::create_dir(&tmp))
+    });
+    let result = created
         .and_then(|_| files.iter().try_for_each(|(f, bytes)| fs::write(tmp.join(f), bytes)))
         .and_then(|_| fs::rename(&tmp, &target));
     if result.is_err() {
