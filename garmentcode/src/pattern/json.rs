@@ -278,7 +278,7 @@ impl Writer {
         if !x.is_finite() {
             return Err(Error::Geometry(format!("cannot write the non-finite number {x}")));
         }
-        self.out.push_str(&python_float_repr(x));
+        push_python_float(&mut self.out, x);
         Ok(())
     }
     fn float_list(&mut self, xs: &[f64]) -> Result<()> {
@@ -338,38 +338,95 @@ impl Writer {
 /// Non-finite values are written as Python's `repr` does (`nan`, `inf`, `-inf`);
 /// they are never valid in a pattern file, but they appear in error messages.
 pub fn python_float_repr(x: f64) -> String {
+    let mut out = String::with_capacity(24);
+    push_python_float(&mut out, x);
+    out
+}
+
+/// [`python_float_repr`] appended to `out`, without allocating (a pattern file
+/// has thousands of numbers).
+pub(crate) fn push_python_float(out: &mut String, x: f64) {
+    use std::fmt::Write as _;
     if x == 0.0 {
-        return "0.0".to_string();
+        out.push_str("0.0");
+        return;
     }
     if x.is_nan() {
-        return "nan".to_string();
+        out.push_str("nan");
+        return;
     }
     if x.is_infinite() {
-        return if x > 0.0 { "inf" } else { "-inf" }.to_string();
+        out.push_str(if x > 0.0 { "inf" } else { "-inf" });
+        return;
     }
-    let sci = format!("{x:e}");
+    let mut sci = StackStr::default();
+    let _ = write!(sci, "{x:e}");
+    let sci = sci.as_str();
     let (mantissa, exp) = sci.split_once('e').expect("LowerExp has an exponent");
     let exp: i32 = exp.parse().expect("integer exponent");
-    let negative = mantissa.starts_with('-');
-    let digits: String = mantissa.chars().filter(|c| c.is_ascii_digit()).collect();
-    let sign = if negative { "-" } else { "" };
-    if !(-4..16).contains(&exp) {
-        let (head, tail) = digits.split_at(1);
-        let mant = if tail.is_empty() { head.to_string() } else { format!("{head}.{tail}") };
-        let esign = if exp < 0 { '-' } else { '+' };
-        return format!("{sign}{mant}e{esign}{:02}", exp.abs());
+    let (negative, mantissa) = match mantissa.strip_prefix('-') {
+        Some(m) => (true, m),
+        None => (false, mantissa),
+    };
+    // The digits without the point ("d.ddd" → "dddd").
+    let (head, tail) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    if negative {
+        out.push('-');
     }
+    if !(-4..16).contains(&exp) {
+        out.push_str(head);
+        if !tail.is_empty() {
+            out.push('.');
+            out.push_str(tail);
+        }
+        let _ = write!(out, "e{}{:02}", if exp < 0 { '-' } else { '+' }, exp.abs());
+        return;
+    }
+    let mut digits = StackStr::default();
+    let _ = digits.write_str(head);
+    let _ = digits.write_str(tail);
+    let digits = digits.as_str();
     let n = digits.len() as i32;
     let point = exp + 1; // digits before the decimal point
-    let body = if point <= 0 {
-        format!("0.{}{}", "0".repeat((-point) as usize), digits)
+    if point <= 0 {
+        out.push_str("0.");
+        (0..-point).for_each(|_| out.push('0'));
+        out.push_str(digits);
     } else if point >= n {
-        format!("{}{}.0", digits, "0".repeat((point - n) as usize))
+        out.push_str(digits);
+        (0..point - n).for_each(|_| out.push('0'));
+        out.push_str(".0");
     } else {
         let (i, f) = digits.split_at(point as usize);
-        format!("{i}.{f}")
-    };
-    format!("{sign}{body}")
+        out.push_str(i);
+        out.push('.');
+        out.push_str(f);
+    }
+}
+
+/// A short string on the stack (`{:e}` of an f64 has at most 24 bytes).
+#[derive(Default)]
+struct StackStr {
+    buf: [u8; 32],
+    len: usize,
+}
+
+impl StackStr {
+    fn as_str(&self) -> &str {
+        std::str::from_utf8(&self.buf[..self.len]).expect("formatted text is UTF-8")
+    }
+}
+
+impl std::fmt::Write for StackStr {
+    fn write_str(&mut self, s: &str) -> std::fmt::Result {
+        let end = self.len + s.len();
+        if end > self.buf.len() {
+            return Err(std::fmt::Error);
+        }
+        self.buf[self.len..end].copy_from_slice(s.as_bytes());
+        self.len = end;
+        Ok(())
+    }
 }
 
 // ---------------------------------------------------------------- reading
@@ -638,6 +695,64 @@ fn kind(v: &Value) -> String {
 
 #[cfg(test)]
 mod tests {
+
+    /// The allocating implementation this replaced, as the oracle.
+    /// A float as Python's `repr` writes it (shortest round-trip digits, scientific
+    /// notation below 1e-4 and from 1e16 on); `-0.0` is written `0.0`.
+    fn python_float_repr_oracle(x: f64) -> String {
+        if x == 0.0 {
+            return "0.0".to_string();
+        }
+        if x.is_nan() {
+            return "nan".to_string();
+        }
+        if x.is_infinite() {
+            return if x > 0.0 { "inf" } else { "-inf" }.to_string();
+        }
+        let sci = format!("{x:e}");
+        let (mantissa, exp) = sci.split_once('e').expect("LowerExp has an exponent");
+        let exp: i32 = exp.parse().expect("integer exponent");
+        let negative = mantissa.starts_with('-');
+        let digits: String = mantissa.chars().filter(|c| c.is_ascii_digit()).collect();
+        let sign = if negative { "-" } else { "" };
+        if !(-4..16).contains(&exp) {
+            let (head, tail) = digits.split_at(1);
+            let mant = if tail.is_empty() { head.to_string() } else { format!("{head}.{tail}") };
+            let esign = if exp < 0 { '-' } else { '+' };
+            return format!("{sign}{mant}e{esign}{:02}", exp.abs());
+        }
+        let n = digits.len() as i32;
+        let point = exp + 1; // digits before the decimal point
+        let body = if point <= 0 {
+            format!("0.{}{}", "0".repeat((-point) as usize), digits)
+        } else if point >= n {
+            format!("{}{}.0", digits, "0".repeat((point - n) as usize))
+        } else {
+            let (i, f) = digits.split_at(point as usize);
+            format!("{i}.{f}")
+        };
+        format!("{sign}{body}")
+    }
+
+    #[test]
+    fn float_repr_matches_the_straightforward_implementation() {
+        let mut bits: u64 = 0x9e37_79b9_7f4a_7c15;
+        let mut check = |x: f64| assert_eq!(python_float_repr(x), python_float_repr_oracle(x), "{x:e}");
+        for x in [0.0, -0.0, 1.0, -1.5, 0.1, 1e-4, 9.999e-5, 1e-5, 1e15, 1e16, 1.5e16, 123456789.0, 5e-324, f64::MAX, -f64::MIN_POSITIVE, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            check(x);
+        }
+        for _ in 0..200_000 {
+            bits ^= bits << 13;
+            bits ^= bits >> 7;
+            bits ^= bits << 17;
+            let x = f64::from_bits(bits);
+            if x.is_finite() {
+                check(x);
+                check((x.abs().log2().rem_euclid(60.0) - 30.0).exp2() * x.signum() * 1.2345);
+            }
+        }
+    }
+
     use super::*;
 
     #[test]
