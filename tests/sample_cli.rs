@@ -42,7 +42,7 @@ fn tree(dir: &Path) -> BTreeMap<String, Vec<u8>> {
             let mut bytes = fs::read(&path).unwrap();
             if rel.starts_with("dataset_properties") {
                 let text = String::from_utf8(bytes).unwrap();
-                bytes = text[..text.find("\nrun:\n").expect("a run section")].as_bytes().to_vec();
+                bytes = text.as_bytes()[..text.find("\nrun:\n").expect("a run section")].to_vec();
             }
             out.insert(rel, bytes);
         }

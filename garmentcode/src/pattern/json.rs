@@ -737,7 +737,7 @@ mod tests {
     #[test]
     fn float_repr_matches_the_straightforward_implementation() {
         let mut bits: u64 = 0x9e37_79b9_7f4a_7c15;
-        let mut check = |x: f64| assert_eq!(python_float_repr(x), python_float_repr_oracle(x), "{x:e}");
+        let check = |x: f64| assert_eq!(python_float_repr(x), python_float_repr_oracle(x), "{x:e}");
         for x in [0.0, -0.0, 1.0, -1.5, 0.1, 1e-4, 9.999e-5, 1e-5, 1e15, 1e16, 1.5e16, 123456789.0, 5e-324, f64::MAX, -f64::MIN_POSITIVE, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
             check(x);
         }
