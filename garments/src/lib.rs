@@ -19,6 +19,7 @@ pub mod collars;
 mod common;
 pub mod design;
 pub mod godet;
+pub mod logo;
 pub mod meta;
 pub mod pants;
 pub mod sample;
