@@ -50,6 +50,12 @@ COMMANDS:
         the reference fits chaotically, are judged by how they sew). With --cases,
         every case folder (specification.json or error.txt) of EXPECTED_DIR
         against the same folder in ACTUAL_DIR. Exit 0 when all pass, else 1.
+    serve [--port P] [--host 127.0.0.1] [--workers N]
+        The web configurator: a page with a control for every design parameter,
+        the body measurements and the pattern drawn live, plus its JSON API
+        (GET /api/schema, POST /api/pattern, ...; see README). Listens on
+        loopback unless --host says otherwise; default port 8000, 0 picks a free
+        one. Prints the page's address.
     help
         Show this text.
 ";
@@ -68,6 +74,7 @@ fn main() {
         "check" => commands::check::run(args),
         "render" => commands::render::run(args),
         "compare" => commands::compare::run(args),
+        "serve" => commands::serve::run(args),
         "help" | "--help" | "-h" => {
             out!("{HELP}");
             Ok(0)

@@ -5,6 +5,7 @@ pub mod check;
 pub mod compare;
 pub mod render;
 pub mod schema;
+pub mod serve;
 
 use crate::args::UsageError;
 use crate::output::OutputSet;
