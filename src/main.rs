@@ -50,7 +50,7 @@ COMMANDS:
         the reference fits chaotically, are judged by how they sew). With --cases,
         every case folder (specification.json or error.txt) of EXPECTED_DIR
         against the same folder in ACTUAL_DIR. Exit 0 when all pass, else 1.
-    serve [--port P] [--host 127.0.0.1] [--workers N]
+    serve [--port P] [--host 127.0.0.1]
         The web configurator: a page with a control for every design parameter,
         the body measurements and the pattern drawn live, plus its JSON API
         (GET /api/schema, POST /api/pattern, ...; see README). Listens on

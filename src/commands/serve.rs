@@ -1,4 +1,4 @@
-//! `garmentcode serve [--port P] [--host H] [--workers N]`: the web configurator.
+//! `garmentcode serve [--port P] [--host H]`: the web configurator.
 
 use crate::args::{Args, UsageError};
 use crate::commands::CliError;
@@ -13,13 +13,6 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
         Some(p) => p.parse::<u16>().map_err(|_| UsageError(format!("serve --port: expected a port number from 0 to 65535, got '{p}'")))?,
     };
     let host = args.value("host")?.unwrap_or_else(|| "127.0.0.1".into());
-    let workers = match args.value("workers")? {
-        None => server::DEFAULT_WORKERS,
-        Some(w) => match w.parse::<usize>() {
-            Ok(n) if (1..=64).contains(&n) => n,
-            _ => return Err(UsageError(format!("serve --workers: expected a number from 1 to 64, got '{w}'")).into()),
-        },
-    };
     let rest = args.finish()?;
     if !rest.is_empty() {
         return Err(UsageError(format!("serve: unexpected argument '{}'", rest[0])).into());
@@ -33,7 +26,6 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
         eprintln!("warning: listening on {addr}: the configurator is reachable from other machines");
     }
     outln!("Serving the garment configurator at {} (Ctrl-C to stop)", server::url(&addr));
-    server::serve(listener, workers, Limits::default(), |line| eprintln!("{line}"))
-        .map_err(|e| CliError::Input(format!("server failed: {e}")))?;
+    server::serve(listener, Limits::default(), |line| eprintln!("{line}"));
     Ok(0)
 }

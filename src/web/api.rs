@@ -535,7 +535,7 @@ struct Output {
 }
 
 thread_local! {
-    /// One arena per worker thread, reused across requests.
+    /// One arena per thread, reused across its requests.
     static ARENA: RefCell<Arena> = RefCell::new(Arena::new());
 }
 
@@ -617,23 +617,21 @@ pub fn random(input: &Json) -> ApiResult<Json> {
         Some(v) => v.as_u64().ok_or_else(|| ApiError::bad(format!("seed must be an integer from 0 to {}, got {v}", u64::MAX)))?,
     };
     let (_, body) = body_from(input.get("body"))?;
-    let mut fallback: Option<(u64, Vec<(String, PValue)>, Vec<String>)> = None;
+    let mut fallback: Option<Json> = None;
     for k in 0..RANDOM_ATTEMPTS {
         let values = sampler().sample_values(&mut sample_rng(seed, k));
         let design = typed_design(&values)?;
         let built = ARENA.with(|a| garments::build::build_in(&mut a.borrow_mut(), &design, &body, "random"));
         let Ok(built) = built else { continue };
+        let answer = json!({ "ok": true, "seed": seed, "draw": k, "design": values_json(&values), "warnings": built.checks.warnings() });
         if built.checks.passed() {
-            return Ok(json!({ "ok": true, "seed": seed, "draw": k, "design": values_json(&values), "warnings": [] }));
+            return Ok(answer);
         }
-        if fallback.is_none() {
-            fallback = Some((k, values, built.checks.warnings()));
-        }
+        fallback.get_or_insert(answer);
     }
-    match fallback {
-        Some((k, values, warnings)) => Ok(json!({ "ok": true, "seed": seed, "draw": k, "design": values_json(&values), "warnings": warnings })),
-        None => Ok(json!({ "ok": false, "seed": seed, "error": format!("none of {RANDOM_ATTEMPTS} random designs of seed {seed} could be built; try another seed") })),
-    }
+    Ok(fallback.unwrap_or_else(|| {
+        json!({ "ok": false, "seed": seed, "error": format!("none of {RANDOM_ATTEMPTS} random designs of seed {seed} could be built; try another seed") })
+    }))
 }
 
 /// The files of a design: `design_params.yaml` and `body_measurements.yaml`

@@ -1,21 +1,25 @@
-//! The configurator's server: a listener and a few worker threads, each taking
-//! one connection at a time, reading one request within the limits, answering it
-//! through [`api::route`](super::api::route) and closing the connection.
+//! The configurator's server: a listener that gives every connection its own
+//! thread (up to [`MAX_CONNECTIONS`] at once), which reads one request within the
+//! limits, answers it through [`api::route`](super::api::route) and closes the
+//! connection.
 //!
 //! A page and a handful of API calls per change need nothing more: no async
-//! runtime, no framework, and a stalled or malformed client ties up one worker for
-//! at most the request deadline. Every failure is contained to its connection, so
-//! the server keeps serving after any bad request.
+//! runtime, no framework. A thread per connection means a stalled client holds
+//! only its own thread (until the request deadline), never the others; beyond the
+//! cap new connections get an immediate 503. Every failure is contained to its
+//! connection, so the server keeps serving after any bad request.
 
 use std::io::{Read, Write};
 use std::net::{Shutdown, SocketAddr, TcpListener, TcpStream, ToSocketAddrs};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 
 use super::api::{ApiError, error_response, route};
 use super::http::{Limits, read_request, write_response};
 
-/// Worker threads by default.
-pub const DEFAULT_WORKERS: usize = 4;
+/// Connections served at once; more get 503 until one finishes.
+pub const MAX_CONNECTIONS: usize = 32;
 
 /// Bind `host:port` (`port` 0 lets the system choose).
 pub fn bind(host: &str, port: u16) -> std::io::Result<TcpListener> {
@@ -36,34 +40,58 @@ pub fn url(addr: &SocketAddr) -> String {
     }
 }
 
-/// Serve forever on `listener` with `workers` threads; `log` gets one line per
-/// refused request (4xx/5xx).
-pub fn serve(listener: TcpListener, workers: usize, limits: Limits, log: fn(&str)) -> std::io::Result<()> {
-    let mut handles = Vec::new();
-    for _ in 0..workers.max(1) {
-        let l = listener.try_clone()?;
-        handles.push(std::thread::spawn(move || {
-            loop {
-                match l.accept() {
-                    Ok((stream, peer)) => handle(stream, peer, &limits, log),
-                    // Out of file descriptors and the like: wait a little, keep going.
-                    Err(_) => std::thread::sleep(Duration::from_millis(50)),
-                }
+/// Serve forever on `listener`; `log` gets one line per refused request
+/// (4xx/5xx).
+pub fn serve(listener: TcpListener, limits: Limits, log: fn(&str)) {
+    let active = Arc::new(AtomicUsize::new(0));
+    for conn in listener.incoming() {
+        let Ok(mut stream) = conn else {
+            // Out of file descriptors and the like: wait a little, keep going.
+            std::thread::sleep(Duration::from_millis(50));
+            continue;
+        };
+        if active.load(Ordering::SeqCst) >= MAX_CONNECTIONS {
+            let busy = ApiError { status: 503, message: "the server is busy; try again".into(), problems: Vec::new() };
+            let _ = stream.set_write_timeout(Some(Duration::from_millis(200)));
+            let _ = write_response(&mut stream, &error_response(&busy), false);
+            log("refused a connection: too many at once (503)");
+            continue;
+        }
+        let slot = Slot::take(&active);
+        let spawned = std::thread::Builder::new().name("garmentcode-http".into()).spawn(move || {
+            let _slot = slot; // given back when the connection is done, even on a panic
+            if let Ok(peer) = stream.peer_addr() {
+                handle(stream, peer, &limits, log);
             }
-        }));
+        });
+        if spawned.is_err() {
+            log("cannot start a thread for a connection");
+        }
     }
-    for h in handles {
-        let _ = h.join();
-    }
-    Ok(())
 }
 
-/// Start serving in background threads (for tests and embedding); returns the
+/// One of the [`MAX_CONNECTIONS`] places, given back on drop.
+struct Slot(Arc<AtomicUsize>);
+
+impl Slot {
+    fn take(active: &Arc<AtomicUsize>) -> Slot {
+        active.fetch_add(1, Ordering::SeqCst);
+        Slot(Arc::clone(active))
+    }
+}
+
+impl Drop for Slot {
+    fn drop(&mut self) {
+        self.0.fetch_sub(1, Ordering::SeqCst);
+    }
+}
+
+/// Start serving in a background thread (for tests and embedding); returns the
 /// bound address.
-pub fn spawn(host: &str, port: u16, workers: usize) -> std::io::Result<SocketAddr> {
+pub fn spawn(host: &str, port: u16) -> std::io::Result<SocketAddr> {
     let listener = bind(host, port)?;
     let addr = listener.local_addr()?;
-    std::thread::spawn(move || serve(listener, workers, Limits::default(), |_| {}));
+    std::thread::spawn(move || serve(listener, Limits::default(), |_| {}));
     Ok(addr)
 }
 
