@@ -172,10 +172,6 @@ impl Browser {
         self.cmd("POST", &format!("/element/{element}/value"), Some(json!({ "text": text })));
     }
 
-    fn clear(&self, element: &str) {
-        self.cmd("POST", &format!("/element/{element}/clear"), Some(json!({})));
-    }
-
     fn js(&self, script: &str) -> Json {
         self.cmd("POST", "/execute/sync", Some(json!({ "script": script, "args": [] })))
     }
@@ -201,11 +197,12 @@ impl Browser {
         self.js("return Number(document.getElementById('drawing').dataset.version)").as_u64().unwrap()
     }
 
-    /// Wait for a drawing newer than `after`, settled (status ok or warning).
+    /// Wait for a drawing newer than `after`, settled (no change pending, status ok
+    /// or warning).
     fn wait_drawing(&self, what: &str, after: u64) -> String {
         let script = format!(
             "const d = document.getElementById('drawing'), s = document.getElementById('status');
-             return Number(d.dataset.version) > {after} && (s.dataset.state === 'ok' || s.dataset.state === 'warning') ? d.innerHTML : null"
+             return Number(d.dataset.version) > {after} && s.dataset.idle === 'true' && (s.dataset.state === 'ok' || s.dataset.state === 'warning') ? d.innerHTML : null"
         );
         self.wait(what, 20, &script).as_str().unwrap().to_string()
     }
@@ -337,7 +334,7 @@ fn a_user_designs_a_garment_in_the_browser() {
     let why = b.wait(
         "the rejection",
         20,
-        "const s = document.getElementById('status'); return s.dataset.state === 'rejected' && !document.getElementById('overlay').hidden ? document.getElementById('overlay').textContent : null",
+        "const s = document.getElementById('status'); return s.dataset.state === 'rejected' && s.dataset.idle === 'true' && !document.getElementById('overlay').hidden ? document.getElementById('overlay').textContent : null",
     );
     assert!(why.as_str().unwrap().contains("empty garment"), "{why}");
     assert!(b.js("return document.querySelector('#drawing svg') !== null").as_bool().unwrap(), "never a blank page");
@@ -385,16 +382,18 @@ fn a_user_designs_a_garment_in_the_browser() {
     assert!(waist_level.as_str().unwrap().parse::<f64>().unwrap() > 50.0, "{waist_level}");
     let v = b.version();
     let waist = b.find("#m-waist");
-    b.clear(&waist);
-    b.keys(&waist, "70\n");
+    b.keys(&waist, "\u{E009}a\u{E000}70\n"); // Ctrl+A, release, type, Enter
     b.wait_drawing("the drawing for a smaller waist", v);
+    assert_eq!(b.js("return document.getElementById('m-waist').value"), "70");
+    assert_eq!(b.js("return document.getElementById('body-select').value"), "", "the body is now custom");
+    b.screenshot(&scratch.join("4-body.png"));
 
     // A random design from the sampler.
     b.click(&b.find("#tab-design"));
     let v = b.version();
     b.click(&b.find("#random"));
     b.wait_drawing("a random design", v);
-    b.screenshot(&scratch.join("4-random.png"));
+    b.screenshot(&scratch.join("5-random.png"));
 
     eprintln!("browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
 }

@@ -15,7 +15,9 @@ const state = {
   bodyLabel: null,       // what the body select shows ("custom" after edits)
   measurements: {},      // name -> number (or null for an absent optional one)
   seq: 0,                // id of the latest evaluation request
-  timer: null,
+  timer: null,           // pending first request of a burst of changes
+  dirty: false,          // changes not yet sent
+  inflight: false,       // a request is on its way
   lastGood: false,       // a drawing is on screen
   view: null,            // current view box [x, y, w, h] (null: fit)
   fitBox: null,          // view box of the whole pattern
@@ -346,36 +348,54 @@ async function loadBody(name) {
 // ---------------------------------------------------------------------------
 // Evaluation and drawing
 
+// A change marks the design dirty; one request is in flight at a time, and when
+// it returns while more changes came in, the latest state is sent at once. So a
+// dragged slider redraws continuously, at the server's pace, and the last
+// answer shown is always for the last state.
 function schedule() {
-  clearTimeout(state.timer);
+  state.dirty = true;
+  setBusy(true);
   setStatus("busy", "Updating…");
+  if (state.inflight) return;
+  clearTimeout(state.timer);
   state.timer = setTimeout(evaluate, DEBOUNCE_MS);
 }
 
+function setBusy(busy) {
+  $("status").dataset.idle = busy ? "false" : "true";
+}
+
 async function evaluate() {
+  state.dirty = false;
+  state.inflight = true;
   const seq = ++state.seq;
   const t0 = performance.now();
-  let res;
   try {
-    res = await api("POST", "/api/pattern", requestBody());
-  } catch (e) {
+    let res;
+    try {
+      res = await api("POST", "/api/pattern", requestBody());
+    } catch (e) {
+      if (seq === state.seq) showProblems("The server refused these values", e.problems, "error");
+      return;
+    }
     if (seq !== state.seq) return;
-    showProblems("The server refused these values", e.problems, "error");
-    return;
+    if (res.body && res.body.derived) showBody(res.body.derived);
+    if (!res.ok) {
+      showProblems("This design cannot be built", [res.error], "rejected");
+      return;
+    }
+    showDrawing(res.svg);
+    $("overlay").hidden = true;
+    const ms = Math.round(performance.now() - t0);
+    const summary = `${res.panels.length} panels · ${res.stitches} stitches · ${ms} ms`;
+    setStatus(res.warnings.length ? "warning" : "ok", res.warnings.length ? `${summary} · ${res.warnings.length} warning(s)` : summary);
+    $("status").title = "Panels: " + res.panels.join(", ");
+    showWarnings(res.warnings);
+  } finally {
+    state.inflight = false;
+    if (state.dirty) evaluate();
+    else setBusy(false);
   }
-  if (seq !== state.seq) return; // a newer change is on its way
-  if (res.body && res.body.derived) showBody(res.body.derived);
-  if (!res.ok) {
-    showProblems("This design cannot be built", [res.error], "rejected");
-    return;
-  }
-  showDrawing(res.svg);
-  $("overlay").hidden = true;
-  const ms = Math.round(performance.now() - t0);
-  const summary = `${res.panels.length} panels · ${res.stitches} stitches · ${ms} ms`;
-  setStatus(res.warnings.length ? "warning" : "ok", res.warnings.length ? `${summary} · ${res.warnings.length} warning(s)` : summary);
-  $("status").title = "Panels: " + res.panels.join(", ");
-  showWarnings(res.warnings);
 }
 
 function setStatus(kind, text) {
