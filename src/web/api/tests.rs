@@ -64,8 +64,11 @@ fn the_page_and_its_files_are_served() {
         assert!(r.content_type.starts_with(ty), "{path}: {}", r.content_type);
         assert!(!r.body.is_empty());
     }
-    let html = String::from_utf8(route(&request("GET", "/", "")).body).unwrap();
-    assert!(!html.contains("http://") && !html.contains("https://"), "no external resources");
+    // Offline: nothing is loaded from elsewhere.
+    for path in ["/", "/app.js", "/style.css"] {
+        let text = String::from_utf8(route(&request("GET", path, "")).body).unwrap();
+        assert!(!text.contains("http://") && !text.contains("https://") && !text.contains("//cdn"), "{path} loads nothing external");
+    }
 }
 
 #[test]
