@@ -66,6 +66,12 @@ COMMANDS:
     sample --seed S --replay INDEX[:ATTEMPT] --out DIR [--design-space ...] [--bodies ...]
         Rebuild one sample, or one attempt of it (also a rejected one), into DIR
         as `build` would, and print the filters' verdict.
+    serve [--port P] [--host 127.0.0.1]
+        The web configurator: a page with a control for every design parameter,
+        the body measurements and the pattern drawn live, plus its JSON API
+        (GET /api/schema, POST /api/pattern, ...; see README). Listens on
+        loopback unless --host says otherwise; default port 8000, 0 picks a free
+        one. Prints the page's address.
     help
         Show this text.
 ";
@@ -85,6 +91,7 @@ fn main() {
         "render" => commands::render::run(args),
         "compare" => commands::compare::run(args),
         "sample" => commands::sample::run(args),
+        "serve" => commands::serve::run(args),
         "help" | "--help" | "-h" => {
             out!("{HELP}");
             Ok(0)

@@ -6,6 +6,7 @@ pub mod compare;
 pub mod render;
 pub mod sample;
 pub mod schema;
+pub mod serve;
 
 use crate::args::UsageError;
 use crate::output::OutputSet;
