@@ -19,16 +19,14 @@
 use std::cell::RefCell;
 use std::sync::OnceLock;
 
-use garmentcode::params::{DesignError, Kind, ParamSpec, Range, Sampler, Value as PValue, from_values, read_design_values, sample_rng, write_design};
+use garmentcode::params::{DesignError, Kind, ParamSpec, Range, Value as PValue, from_values, read_design_values, write_design};
+use garments::sample::{DatasetSampler, NamedBody, Outcome};
 use garmentcode::{Arena, Body, DesignSpace, Params};
 use garments::Design;
 use serde_json::{Map, Value as Json, json};
 
 use super::http::{Request, Response};
 use super::zip;
-
-/// Re-draws of a random design before giving up (`POST /api/random`).
-pub const RANDOM_ATTEMPTS: u64 = 32;
 
 /// Longest accepted pattern name.
 const MAX_NAME: usize = 64;
@@ -75,11 +73,6 @@ type ApiResult<T> = Result<T, ApiError>;
 pub fn space() -> &'static DesignSpace {
     static SPACE: OnceLock<DesignSpace> = OnceLock::new();
     SPACE.get_or_init(Design::design_space)
-}
-
-fn sampler() -> &'static Sampler {
-    static SAMPLER: OnceLock<Sampler> = OnceLock::new();
-    SAMPLER.get_or_init(|| Sampler::new(space().clone()))
 }
 
 /// The built-in bodies, parsed once.
@@ -483,7 +476,7 @@ pub fn schema() -> Json {
         "default_body": garments::builtin::DEFAULT_BODY,
         "measurements": measurements,
         "derived": derived,
-        "random_attempts": RANDOM_ATTEMPTS,
+        "random_attempts": garments::sample::MAX_ATTEMPTS,
     })
 }
 
@@ -607,31 +600,44 @@ pub fn pattern(input: &Json) -> ApiResult<Json> {
     serde_json::from_str(&text).map_err(|e| ApiError::new(500, format!("internal error: {e}")))
 }
 
-/// `POST /api/random` `{"seed", "body"}`: a random design from the project's
-/// sampler. Draw `k` is `sample_rng(seed, k)`; draws the library refuses or that
-/// fail a check are re-drawn, up to [`RANDOM_ATTEMPTS`] (then the first buildable
-/// draw is returned with its warnings).
+/// `POST /api/random` `{"seed", "body"}`: a random design from the dataset
+/// sampler (`garmentcode sample`): sample 0 of `seed` on the request's body, drawn
+/// again while it fails the reference's filters, exactly as a dataset does. So
+/// "Random" with seed S on a body shows the first garment of
+/// `garmentcode sample --seed S --bodies BODY`.
 pub fn random(input: &Json) -> ApiResult<Json> {
     let seed = match input.get("seed") {
         None | Some(Json::Null) => 0,
         Some(v) => v.as_u64().ok_or_else(|| ApiError::bad(format!("seed must be an integer from 0 to {}, got {v}", u64::MAX)))?,
     };
-    let (_, body) = body_from(input.get("body"))?;
-    let mut fallback: Option<Json> = None;
-    for k in 0..RANDOM_ATTEMPTS {
-        let values = sampler().sample_values(&mut sample_rng(seed, k));
-        let design = typed_design(&values)?;
-        let built = ARENA.with(|a| garments::build::build_in(&mut a.borrow_mut(), &design, &body, "random"));
-        let Ok(built) = built else { continue };
-        let answer = json!({ "ok": true, "seed": seed, "draw": k, "design": values_json(&values), "warnings": built.checks.warnings() });
-        if built.checks.passed() {
-            return Ok(answer);
+    let (name, body) = body_from(input.get("body"))?;
+    let sampler = DatasetSampler::new(seed, space().clone(), vec![NamedBody { name, body }])
+        .map_err(|e| ApiError::new(500, format!("internal error: {e}")))?;
+    let outcome = ARENA.with(|a| sampler.draw_in(&mut a.borrow_mut(), 0));
+    Ok(match outcome {
+        Outcome::Accepted(sample) => {
+            let values = design_to_values(&sample.design);
+            json!({ "ok": true, "seed": seed, "draw": sample.attempt, "design": values_json(&values), "warnings": sample.built.checks.warnings() })
         }
-        fallback.get_or_insert(answer);
-    }
-    Ok(fallback.unwrap_or_else(|| {
-        json!({ "ok": false, "seed": seed, "error": format!("none of {RANDOM_ATTEMPTS} random designs of seed {seed} could be built; try another seed") })
-    }))
+        Outcome::Exhausted { rejections, .. } => json!({
+            "ok": false,
+            "seed": seed,
+            "error": format!("all {} random designs of seed {seed} failed the filters on this body; try another seed", rejections.len())
+        }),
+    })
+}
+
+/// Every parameter's value in a typed design, in schema order.
+fn design_to_values(design: &Design) -> Vec<(String, PValue)> {
+    use garmentcode::Params;
+    space()
+        .params()
+        .iter()
+        .map(|p| {
+            let keys: Vec<&str> = p.path.split('.').collect();
+            (p.path.clone(), design.get_value(&keys).unwrap_or_else(|| p.default.clone()))
+        })
+        .collect()
 }
 
 /// The files of a design: `design_params.yaml` and `body_measurements.yaml`

@@ -206,10 +206,11 @@ fn random_designs_come_from_the_sampler_and_are_reproducible() {
     assert_eq!(a, b);
     let (_, c) = post("/api/random", json!({ "seed": 8 }));
     assert_ne!(a["design"], c["design"]);
-    // The design is draw `draw` of the sampler for this seed.
-    let k = a["draw"].as_u64().unwrap();
-    let expected = sampler().sample_values(&mut sample_rng(7, k));
-    assert_eq!(a["design"], values_json(&expected));
+    // The design is sample 0 of the dataset sampler for this seed and body.
+    let dataset = garments::sample::DatasetSampler::with_defaults(7);
+    let garments::sample::Outcome::Accepted(sample) = dataset.draw(0) else { panic!("sample 0 of seed 7 is accepted") };
+    assert_eq!(a["draw"], sample.attempt);
+    assert_eq!(a["design"], values_json(&design_to_values(&sample.design)));
     // And it builds.
     let (_, r) = post("/api/pattern", json!({ "design": a["design"] }));
     assert_eq!(r["ok"], true);
@@ -283,11 +284,15 @@ fn extreme_bodies_are_answered_not_panicked() {
     }
 }
 
+fn sampler() -> garmentcode::params::Sampler {
+    garmentcode::params::Sampler::new(space().clone())
+}
+
 #[test]
 fn random_designs_on_every_body_never_break_the_api() {
     let bodies: Vec<&str> = garments::builtin::BODIES.iter().map(|(n, _)| *n).collect();
     for i in 0..40u64 {
-        let values = sampler().sample_values(&mut sample_rng(99, i));
+        let values = sampler().sample_values(&mut garmentcode::params::sample_rng(99, i));
         let (status, r) = post("/api/pattern", json!({ "design": values_json(&values), "body": bodies[i as usize % bodies.len()] }));
         assert_eq!(status, 200, "{r}");
         if r["ok"] == true {
