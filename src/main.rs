@@ -26,6 +26,7 @@ USAGE:
 
 COMMANDS:
     build [--design FILE.yaml|NAME] [--body NAME|FILE.yaml] --out DIR [--strict] [--no-png]
+          [--layout placed|flat]
         Build a garment: DIR/specification.json, pattern.svg, pattern.png,
         design_params.yaml, body_measurements.yaml and checks.json. Without
         --design the built-in t-shirt; without --body the neutral body mean_all.
@@ -40,8 +41,11 @@ COMMANDS:
         Validate a pattern: errors (open loops, bad indices, dangling stitches,
         edges stitched twice) and warnings (self-intersections, stitched edges of
         different lengths). Exit 1 on errors (with --strict also on warnings).
-    render SPEC.json --out DIR [--no-png]
+    render SPEC.json --out DIR [--no-png] [--layout placed|flat]
         Re-emit DIR/specification.json and draw DIR/pattern.svg and DIR/pattern.png.
+        Drawings (build, render): --layout placed (default) draws panels where
+        the reference does, as on the body; --layout flat lays them side by side
+        without overlap, in rows at most 150 cm wide, to print and cut from.
     compare EXPECTED.json ACTUAL.json [--tol CM] [--strict] [--verbose]
     compare --cases EXPECTED_DIR ACTUAL_DIR [--tol CM] [--strict] [--verbose]
         Judge whether two patterns are the same garment by geometry (outlines,

@@ -69,6 +69,15 @@ fn build_named_designs_and_bodies() {
         assert!(dir.join(design).join("specification.json").exists());
         assert!(!dir.join(design).join("pattern.png").exists(), "--no-png");
     }
+    // The flat layout draws the same pattern differently; a bad layout is refused.
+    let o = run(&["build", "--design", "jumpsuit", "--body", "mean_male", "--layout", "flat", "--out", "flat", "--no-png"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let read = |d: &str, f: &str| std::fs::read(dir.join(d).join(f)).unwrap();
+    assert_eq!(read("flat", "specification.json"), read("jumpsuit", "specification.json"));
+    assert_ne!(read("flat", "pattern.svg"), read("jumpsuit", "pattern.svg"));
+    let o = run(&["build", "--layout", "diagonal", "--out", "bad"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("placed or flat"));
 }
 
 /// Bad design files: each gives exit 2, names the file, the parameter path and

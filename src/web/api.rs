@@ -534,21 +534,26 @@ thread_local! {
 
 fn evaluate(input: &Json) -> ApiResult<Evaluation> {
     for k in input.as_object().map(|m| m.keys().collect::<Vec<_>>()).unwrap_or_default() {
-        if !["design", "body", "name"].contains(&k.as_str()) {
-            return Err(ApiError::bad(format!("unknown key \"{k}\" (expected design, body and name)")));
+        if !["design", "body", "name", "layout"].contains(&k.as_str()) {
+            return Err(ApiError::bad(format!("unknown key \"{k}\" (expected design, body, name and layout)")));
         }
     }
     let name = pattern_name(input)?;
     let values = design_values(input.get("design"))?;
     let (body_name, body) = body_from(input.get("body"))?;
+    let layout = match input.get("layout") {
+        None | Some(Json::Null) => garmentcode::draw::Layout::Placed,
+        Some(Json::String(s)) => s.parse().map_err(|e: String| ApiError::bad(format!("layout: {e}")))?,
+        Some(other) => return Err(ApiError::bad(format!("layout must be \"placed\" or \"flat\", got {other}"))),
+    };
     let design = typed_design(&values)?;
-    let result = build(&design, &body, &name);
+    let result = build(&design, &body, &name, layout);
     Ok(Evaluation { name, body_name, body, design, result })
 }
 
-fn build(design: &Design, body: &Body, name: &str) -> Result<Output, String> {
+fn build(design: &Design, body: &Body, name: &str, layout: garmentcode::draw::Layout) -> Result<Output, String> {
     let built = ARENA.with(|a| garments::build::build_in(&mut a.borrow_mut(), design, body, name)).map_err(|e| e.to_string())?;
-    let svg = garmentcode::draw::to_svg(&built.pattern, &garmentcode::draw::DrawOptions::default()).map_err(|e| format!("the pattern cannot be drawn: {e}"))?;
+    let svg = garmentcode::draw::to_svg(&built.pattern, &garmentcode::draw::DrawOptions { layout, ..Default::default() }).map_err(|e| format!("the pattern cannot be drawn: {e}"))?;
     let spec = built.pattern.to_json().map_err(|e| format!("the pattern cannot be written: {e}"))?;
     Ok(Output {
         svg,

@@ -358,7 +358,7 @@ fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<
         Ok(built) => {
             set.add("specification.json", built.pattern.to_json().map_err(|e| CliError::Failed(e.to_string()))?);
             if opts.formats.svg || opts.formats.png {
-                crate::commands::add_drawings(&mut set, &built.pattern, opts.formats.png).map_err(|e| CliError::Failed(e.to_string()))?;
+                crate::commands::add_drawings(&mut set, &built.pattern, opts.formats.png, garmentcode::draw::Layout::Placed).map_err(|e| CliError::Failed(e.to_string()))?;
             }
             set.add("checks.json", built.checks.to_json());
         }

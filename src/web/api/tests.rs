@@ -302,3 +302,16 @@ fn random_designs_on_every_body_never_break_the_api() {
         }
     }
 }
+
+#[test]
+fn layout_chooses_the_drawing() {
+    let (_, placed) = post("/api/pattern", json!({ "design": { "meta.upper": "Shirt" } }));
+    let (_, flat) = post("/api/pattern", json!({ "design": { "meta.upper": "Shirt" }, "layout": "flat" }));
+    assert_eq!(placed["ok"], true);
+    assert_eq!(flat["ok"], true);
+    assert_ne!(placed["svg"], flat["svg"], "a different arrangement");
+    assert_eq!(placed["specification"], flat["specification"], "the same pattern");
+    let (status, r) = post("/api/pattern", json!({ "layout": "diagonal" }));
+    assert_eq!(status, 400);
+    assert!(r["error"].as_str().unwrap().contains("placed or flat"), "{r}");
+}

@@ -11,6 +11,7 @@ const state = {
   values: {},            // path -> current value
   startDesign: null,     // name of the built-in design Reset returns to
   name: "garment",       // pattern name (file names)
+  layout: "placed",      // drawing: "placed" (as on the body) or "flat" (to cut)
   bodyBase: null,        // built-in body the measurements started from
   bodyLabel: null,       // what the body select shows ("custom" after edits)
   measurements: {},      // name -> number (or null for an absent optional one)
@@ -63,6 +64,7 @@ function requestBody() {
     design: state.values,
     body: { base: state.bodyBase, name: state.bodyLabel, measurements: state.measurements },
     name: state.name,
+    layout: state.layout,
   };
 }
 
@@ -665,6 +667,7 @@ async function main() {
   $("download-zip").addEventListener("click", downloadZip);
   $("filter").addEventListener("input", applyFilter);
   $("show-stitches").addEventListener("change", (ev) => $("drawing").classList.toggle("hide-stitches", !ev.target.checked));
+  $("layout").addEventListener("change", (ev) => { state.layout = ev.target.value; state.view = null; schedule(); });
   $("tab-design").addEventListener("click", () => selectTab("design"));
   $("tab-body").addEventListener("click", () => selectTab("body"));
 
