@@ -1,9 +1,14 @@
-//! The runtime-only example garment (`examples/skirt_runtime.rs`) builds, passes
-//! validation, fits the body it was made for, and emits a pinned pattern.
+//! The example garments build, pass validation, fit the body they were made for,
+//! and emit pinned patterns: the runtime-only skirt (`examples/skirt_runtime.rs`)
+//! and the paper's skirt written with the macros (`examples/paper_skirt.rs`).
 
 #[allow(dead_code)]
 #[path = "../examples/skirt_runtime.rs"]
 mod skirt_runtime;
+
+#[allow(dead_code)]
+#[path = "../examples/paper_skirt.rs"]
+mod paper_skirt;
 
 use garmentcode::pattern::{Severity, validate};
 use garmentcode::{Arena, PartExt};
@@ -33,4 +38,39 @@ fn runtime_skirt_builds_and_fits() {
         assert!((top - skirt_runtime::WAIST_LEVEL).abs() < 1e-6, "{}: top at {top}", p.name);
     }
     insta::assert_snapshot!("skirt_runtime", pattern.to_json().unwrap());
+}
+
+#[test]
+fn paper_skirt_builds_from_its_design_file() {
+    use garmentcode::params::{read_design, write_design};
+    use garmentcode::{Body, Interfaces, Params};
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let space = paper_skirt::Design::design_space();
+    let text = std::fs::read_to_string(root.join("examples/data/paper_skirt.yaml")).unwrap();
+    let design: paper_skirt::Design = read_design(&text, "paper_skirt.yaml", &space).unwrap();
+    assert_eq!(design.skirt.n_panels, 8);
+    // The design file is in the reference's format, and writing it back keeps it.
+    assert_eq!(write_design(&design, &space), text);
+    let body_text = std::fs::read_to_string(root.join("garments/data/bodies/mean_all.yaml")).unwrap();
+    let body = Body::from_yaml(&body_text, "mean_all.yaml").unwrap();
+
+    let mut a = Arena::new();
+    let skirt = paper_skirt::FlareSkirt::new(&mut a, &body, &design.skirt).unwrap();
+    assert_eq!(skirt.interface_names(), ["top"]);
+    assert_eq!(skirt.interface("top"), Some(skirt.top));
+    assert!((skirt.top.length(&a) - body.waist).abs() < 1e-9, "the waistline is the body's waist");
+    let pattern = skirt.assemble(&mut a, "paper_skirt").unwrap();
+    let names: Vec<&str> = pattern.panels.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(names.len(), 8);
+    assert!(names.iter().all(|n| n.starts_with("skirt_")), "{names:?}");
+    assert_eq!(pattern.stitches.len(), 8, "each panel sewn to the next, around");
+    let problems = validate(&pattern);
+    assert!(problems.is_empty(), "{problems:?}");
+    insta::assert_snapshot!("paper_skirt", pattern.to_json().unwrap());
+
+    // Retargeting: the same design on another body fits that body's waist.
+    let other = Body::from_yaml(&std::fs::read_to_string(root.join("garments/data/bodies/mean_male.yaml")).unwrap(), "mean_male.yaml").unwrap();
+    let mut a = Arena::new();
+    let skirt = paper_skirt::FlareSkirt::new(&mut a, &other, &design.skirt).unwrap();
+    assert!((skirt.top.length(&a) - other.waist).abs() < 1e-9);
 }

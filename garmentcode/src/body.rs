@@ -183,13 +183,15 @@ impl Body {
                 _ => problems.push(format!("{at}: body.{name}: expected a number, got {}", describe(v))),
             }
         }
-        for (i, (name, angle)) in KEYS.iter().enumerate() {
+        for (i, (name, _)) in KEYS.iter().enumerate() {
             match values[i] {
                 None if *name == "vert_bust_line" => {}
                 None => problems.push(format!("body.{name}: missing measurement")),
-                Some(x) if *angle && x < 0.0 => problems.push(format!("body.{name}: {x} must not be negative (degrees)")),
-                Some(x) if !*angle && x <= 0.0 => problems.push(format!("body.{name}: {x} must be positive (cm)")),
-                _ => {}
+                Some(x) => {
+                    if let Err(e) = Body::check_measurement(name, x) {
+                        problems.push(format!("body.{name}: {e}"));
+                    }
+                }
             }
         }
         if !problems.is_empty() {
@@ -339,6 +341,66 @@ impl Body {
     /// Whether a measurement is an angle (degrees) rather than a length.
     pub fn is_angle(name: &str) -> bool {
         KEYS.iter().any(|(n, a)| *n == name && *a)
+    }
+
+    /// Check one raw measurement as body files are checked: a known name, a finite
+    /// number, lengths positive, angles non-negative. The error says what is
+    /// allowed (without the name, which the caller prefixes).
+    pub fn check_measurement(name: &str, x: f64) -> Result<(), String> {
+        let Some((_, angle)) = KEYS.iter().find(|(n, _)| *n == name) else {
+            return Err("unknown measurement".into());
+        };
+        if !x.is_finite() {
+            return Err(format!("expected a finite number, got {x}"));
+        }
+        if *angle && x < 0.0 {
+            return Err(format!("{x} must not be negative (degrees)"));
+        }
+        if !*angle && x <= 0.0 {
+            return Err(format!("{x} must be positive (cm)"));
+        }
+        Ok(())
+    }
+
+    /// What a raw or derived (`_`-prefixed) measurement is, for tools that show
+    /// them (the same words as the field documentation).
+    pub fn describe_measurement(name: &str) -> Option<&'static str> {
+        Some(match name {
+            "waist" => "Waist circumference.",
+            "bust" => "Bust circumference.",
+            "underbust" => "Underbust circumference (not used by the garment programs).",
+            "hips" => "Hip circumference.",
+            "leg_circ" => "Circumference of one thigh at its thickest.",
+            "wrist" => "Wrist circumference.",
+            "waist_back_width" => "Back part of the waist circumference, balance line to balance line.",
+            "back_width" => "Back part of the bust circumference.",
+            "hip_back_width" => "Back part of the hip circumference.",
+            "neck_w" => "Width of the neck base at the back.",
+            "waist_line" => "Nape of the neck to the waist along the back.",
+            "waist_over_bust_line" => "Neck base over the bust point to the waist, in front.",
+            "bust_line" => "Shoulder level to the bust point.",
+            "vert_bust_line" => "Vertical distance from the nape to the bust level (optional).",
+            "arm_length" => "Shoulder to wrist.",
+            "height" => "Floor to the top of the head.",
+            "head_l" => "Nape of the neck to the top of the head.",
+            "shoulder_w" => "Between the outer ends of the collarbones.",
+            "armscye_depth" => "Shoulder to the bottom of the armpit, on the back.",
+            "bust_points" => "Between the bust apexes.",
+            "hips_line" => "Waist level down to the hip level.",
+            "bum_points" => "Between the apexes of the buttocks.",
+            "crotch_hip_diff" => "Hip level down to the crotch.",
+            "hip_inclination" => "Waist-to-hip side slope, degrees (0 = vertical).",
+            "shoulder_incl" => "Shoulder slope, degrees.",
+            "arm_pose_angle" => "Arm abduction of the body's pose, degrees.",
+            "_waist_level" => "Height of the waist above the floor (height − head − waist line).",
+            "_leg_length" => "Height of the hip line above the floor.",
+            "_base_sleeve_balance" => "Sleeve balance line, slightly inside the shoulder width.",
+            "_bust_line" => "Bust-dart level.",
+            "_hip_inclination" => "Half the hip slope.",
+            "_shoulder_incl" => "Shoulder slope.",
+            "_armscye_depth" => "Armhole depth with ease.",
+            _ => return None,
+        })
     }
 }
 

@@ -39,6 +39,7 @@ pub mod rotation;
 pub mod seq;
 pub mod slots;
 pub mod stitch;
+pub mod svgpath;
 pub mod yaml;
 
 pub use arena::{Arena, EdgeId, InterfaceId, PanelId, VertexId};

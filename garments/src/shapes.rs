@@ -7,8 +7,9 @@ use crate::design::NeckShape;
 use garmentcode::arc::{self, SvgArc};
 use garmentcode::bezier::Bezier;
 use garmentcode::curves::match_tangents;
-use garmentcode::math::{Vec2, close_enough, interior_params, norm};
-use garmentcode::{Arena, Curve, Edge, EdgeSeq, Error, Result};
+use garmentcode::math::{Vec2, close_enough, norm};
+use garmentcode::svgpath::{SvgPath, halves_from_outlines};
+use garmentcode::{Arena, Curve, Edge, EdgeSeq, Result};
 
 /// Parameters of a half neckline shape.
 #[derive(Clone, Copy, Debug)]
@@ -137,12 +138,11 @@ pub fn sun(a: &mut Arena, width: f64, depth: f64, n_rays: usize, d_rays: f64) ->
     EdgeSeq::from_points(a, &verts, false)
 }
 
-/// The SIGGRAPH logo split into left and right halves of chains (decorative cut).
-pub fn siggraph_logo(_a: &mut Arena, _width: f64) -> Result<(Vec<EdgeSeq>, Vec<EdgeSeq>)> {
-    Err(Error::Design("the SIGGRAPH_logo side cut needs the logo outline, which is not bundled".into()))
-}
-
-#[allow(dead_code)]
-fn unused() {
-    let _ = interior_params;
+/// The SIGGRAPH logo split into left and right halves of chains (decorative cut),
+/// `width` high: the bundled outlines ([`crate::logo`]) through
+/// [`garmentcode::svgpath::halves_from_outlines`]. Which short pieces are left out
+/// depends on the scale, so the halves are computed for every width.
+pub fn siggraph_logo(a: &mut Arena, width: f64) -> Result<(Vec<EdgeSeq>, Vec<EdgeSeq>)> {
+    let outlines: Vec<SvgPath> = crate::logo::OUTLINES.iter().map(|o| SvgPath(o.to_vec())).collect();
+    halves_from_outlines(a, &outlines, Some(width))
 }

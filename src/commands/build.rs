@@ -1,4 +1,4 @@
-//! `garmentcode build [--design FILE|NAME] [--body NAME|FILE] --out DIR [--strict] [--no-png]`
+//! `garmentcode build [--design FILE|NAME] [--body NAME|FILE] --out DIR [--strict] [--no-png] [--layout placed|flat]`
 
 use crate::args::{Args, UsageError};
 use crate::commands::{CliError, load_body, load_design};
@@ -16,6 +16,7 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
     let name = args.value("name")?;
     let strict = args.switch("strict");
     let no_png = args.switch("no-png");
+    let layout = crate::commands::layout_arg(&mut args, "build")?;
     let rest = args.finish()?;
     if !rest.is_empty() {
         return Err(UsageError(format!("build: unexpected argument '{}'", rest[0])).into());
@@ -33,7 +34,7 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
     }
     let mut set = OutputSet::default();
     set.add("specification.json", built.pattern.to_json().map_err(|e| CliError::Input(e.to_string()))?);
-    crate::commands::add_drawings(&mut set, &built.pattern, !no_png).map_err(|e| CliError::Input(e.to_string()))?;
+    crate::commands::add_drawings(&mut set, &built.pattern, !no_png, layout).map_err(|e| CliError::Input(e.to_string()))?;
     set.add("design_params.yaml", write_design(&design, &Design::design_space()));
     set.add("body_measurements.yaml", body.to_yaml());
     set.add("checks.json", built.checks.to_json());

@@ -22,12 +22,12 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
     if format == "json" {
         let list: Vec<serde_json::Value> = problems.iter().map(problem_json).collect();
         let report = json!({ "file": file, "errors": errors, "warnings": warnings, "problems": list });
-        println!("{}", serde_json::to_string_pretty(&report).expect("report serialises"));
+        outln!("{}", serde_json::to_string_pretty(&report).expect("report serialises"));
     } else {
         for p in &problems {
-            println!("{p}");
+            outln!("{p}");
         }
-        println!("{file}: {} panels, {} stitches: {errors} error(s), {warnings} warning(s)", pattern.panels.len(), pattern.stitches.len());
+        outln!("{file}: {} panels, {} stitches: {errors} error(s), {warnings} warning(s)", pattern.panels.len(), pattern.stitches.len());
     }
     Ok(if errors > 0 || (strict && warnings > 0) { 1 } else { 0 })
 }

@@ -35,15 +35,15 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
         vec![(name, compare::compare_spec_files(expected, actual, &opts))]
     };
     for (name, v) in &results {
-        println!("{}", v.report_line(name, if verbose { i64::MAX } else { 3 }));
+        outln!("{}", v.report_line(name, if verbose { i64::MAX } else { 3 }));
         if verbose {
             for n in &v.notes {
-                println!("  note: {n}");
+                outln!("  note: {n}");
             }
         }
     }
     for line in compare::summary(&results, &opts) {
-        println!("{line}");
+        outln!("{line}");
     }
     let passed = results.iter().filter(|(_, v)| v.pass).count();
     Ok(if passed == results.len() && passed > 0 { 0 } else { 1 })

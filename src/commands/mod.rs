@@ -4,7 +4,9 @@ pub mod build;
 pub mod check;
 pub mod compare;
 pub mod render;
+pub mod sample;
 pub mod schema;
+pub mod serve;
 
 use crate::args::UsageError;
 use crate::output::OutputSet;
@@ -19,6 +21,8 @@ pub enum CliError {
     Input(String),
     /// A valid design rejected by a requested check (exit 1).
     Rejected(String),
+    /// Work started but did not complete (exit 1).
+    Failed(String),
 }
 
 impl From<UsageError> for CliError {
@@ -33,9 +37,10 @@ pub fn read_pattern(path: &str) -> Result<Pattern, CliError> {
     Pattern::from_json(&text).map_err(|e| CliError::Input(format!("{path}: {e}")))
 }
 
-/// Add `pattern.svg` (and `pattern.png`) for a non-empty pattern.
-pub fn add_drawings(set: &mut OutputSet, pattern: &Pattern, png: bool) -> garmentcode::Result<()> {
-    let opts = garmentcode::draw::DrawOptions::default();
+/// Add `pattern.svg` (and `pattern.png`) for a non-empty pattern, laid out as
+/// asked.
+pub fn add_drawings(set: &mut OutputSet, pattern: &Pattern, png: bool, layout: garmentcode::draw::Layout) -> garmentcode::Result<()> {
+    let opts = garmentcode::draw::DrawOptions { layout, ..Default::default() };
     set.add("pattern.svg", garmentcode::draw::to_svg(pattern, &opts)?);
     if png {
         set.add("pattern.png", garmentcode::draw::to_png(pattern, &opts)?);
@@ -73,4 +78,12 @@ pub fn load_body(arg: Option<&str>) -> Result<(garmentcode::Body, String), CliEr
     let text = std::fs::read_to_string(name).map_err(|e| CliError::Input(format!("{name}: cannot read: {e}")))?;
     let b = garmentcode::Body::from_yaml(&text, name).map_err(|e| CliError::Input(e.to_string()))?;
     Ok((b, name.to_string()))
+}
+
+/// `--layout placed|flat` (default placed, the reference's drawing).
+pub fn layout_arg(args: &mut crate::args::Args, command: &str) -> Result<garmentcode::draw::Layout, CliError> {
+    match args.value("layout")? {
+        None => Ok(garmentcode::draw::Layout::Placed),
+        Some(v) => v.parse().map_err(|e| CliError::Usage(format!("{command} --layout: {e}"))),
+    }
 }

@@ -7,7 +7,7 @@
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
-use super::DrawOptions;
+use super::{DrawOptions, FLAT_ROW_WIDTH, Layout};
 use crate::arc::SvgArc;
 use crate::bezier::Bezier;
 use crate::error::{Error, Result};
@@ -386,6 +386,9 @@ pub fn layout(p: &Pattern, opts: &DrawOptions) -> Result<Sheet> {
     }
     let mut panels = front;
     panels.append(&mut back);
+    if opts.layout == Layout::Flat {
+        arrange_flat(p, &mut panels);
+    }
 
     let all = panels.iter().skip(1).fold(panels[0].bbox, |acc, q| acc.union(&q.bbox));
     let m = opts.margin;
@@ -395,6 +398,35 @@ pub fn layout(p: &Pattern, opts: &DrawOptions) -> Result<Sheet> {
     let markers = if opts.stitch_markers { markers(p, &panels)? } else { Vec::new() };
     let texts = texts(&panels, opts);
     Ok(Sheet { view_box, panels, markers, texts })
+}
+
+/// Gap between panels of the flat layout, cm.
+const FLAT_GAP: f64 = 4.0;
+
+/// Rearrange placed panels into rows without overlap (shelf packing in the
+/// pattern's panel order, or by name for panels the order does not list).
+fn arrange_flat(p: &Pattern, panels: &mut [PlacedPanel]) {
+    let order = p.panel_order.clone().unwrap_or_else(|| crate::pattern::panel_order(p));
+    let rank = |name: &str| order.iter().position(|n| n == name).unwrap_or(usize::MAX);
+    panels.sort_by(|a, b| rank(&a.name).cmp(&rank(&b.name)).then_with(|| a.name.cmp(&b.name)));
+    let widest = panels.iter().map(|q| q.bbox.max.x - q.bbox.min.x).fold(0.0, f64::max);
+    let row_width = FLAT_ROW_WIDTH.max(widest);
+    let (mut x, mut y, mut row_height) = (0.0, 0.0, 0.0f64);
+    for q in panels.iter_mut() {
+        let size = q.bbox.max - q.bbox.min;
+        if x > 0.0 && x + size.x > row_width {
+            x = 0.0;
+            y += row_height + FLAT_GAP;
+            row_height = 0.0;
+        }
+        let shift = Vec2::new(x, y) - q.bbox.min;
+        for s in &mut q.segments {
+            s.translate(shift);
+        }
+        q.bbox = BBox { min: q.bbox.min + shift, max: q.bbox.max + shift };
+        x += size.x + FLAT_GAP;
+        row_height = row_height.max(size.y);
+    }
 }
 
 /// Place one panel as `VisPattern._draw_a_panel` does: flip y, move the bounding box
@@ -428,8 +460,8 @@ fn place(panel: &PanelSpec) -> Result<PlacedPanel> {
     let mut segments = Vec::with_capacity(panel.edges.len());
     for (k, e) in panel.edges.iter().enumerate() {
         let [i, j] = e.endpoints;
-        if i >= local.len() || j >= local.len() {
-            return Err(bad(&format!("edge {k} refers to a missing vertex")));
+        if let Some(v) = [i, j].into_iter().find(|&v| v >= local.len()) {
+            return Err(bad(&format!("edge {k} refers to vertex {v}, but the panel has {} vertices", local.len())));
         }
         let (s, t) = (local[i], local[j]);
         // Relative control points with y negated: the flip mirrors the edge frame.

@@ -29,9 +29,39 @@ mod tests;
 use crate::error::Result;
 use crate::pattern::Pattern;
 
+/// How panels are arranged on the sheet.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Layout {
+    /// As the reference draws them: each panel at its flattened 3D position, front
+    /// panels on the left and back panels on the right (panels may overlap, as on
+    /// the body).
+    #[default]
+    Placed,
+    /// Side by side without overlap, in rows at most [`FLAT_ROW_WIDTH`] cm wide
+    /// (or as wide as the widest panel), in the pattern's panel order: a sheet to
+    /// print and cut from. Panels keep their orientation.
+    Flat,
+}
+
+/// Row width of [`Layout::Flat`], in cm (a 150 cm bolt of fabric).
+pub const FLAT_ROW_WIDTH: f64 = 150.0;
+
+impl std::str::FromStr for Layout {
+    type Err = String;
+    fn from_str(s: &str) -> std::result::Result<Layout, String> {
+        match s {
+            "placed" => Ok(Layout::Placed),
+            "flat" => Ok(Layout::Flat),
+            other => Err(format!("unknown layout '{other}' (expected placed or flat)")),
+        }
+    }
+}
+
 /// What to draw and at which resolution.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DrawOptions {
+    /// Arrangement of the panels.
+    pub layout: Layout,
     /// Panel names at the centre of each panel (the reference's `with_text`).
     pub with_text: bool,
     /// Vertex indices at vertices and edge indices at edge midpoints (the
@@ -50,6 +80,7 @@ pub struct DrawOptions {
 impl Default for DrawOptions {
     fn default() -> Self {
         DrawOptions {
+            layout: Layout::Placed,
             with_text: true,
             view_ids: false,
             stitch_markers: true,

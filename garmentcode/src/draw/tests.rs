@@ -330,3 +330,35 @@ fn png_paints_fill_markers_and_background() {
     let (pixels, _) = decode(&to_png(&p, &white).unwrap());
     assert_eq!(&pixels[..4], &[255, 255, 255, 255]);
 }
+
+/// The flat layout puts every panel of every reference case on the sheet without
+/// overlap, keeps each outline's shape, and keeps the markers inside.
+#[test]
+fn flat_layout_has_no_overlaps() {
+    use super::Layout;
+    let flat = DrawOptions { layout: Layout::Flat, ..Default::default() };
+    for (name, p) in cases() {
+        let placed = layout::layout(&p, &DrawOptions::default()).unwrap();
+        let sheet = layout::layout(&p, &flat).unwrap();
+        assert_eq!(sheet.panels.len(), placed.panels.len());
+        for (i, a) in sheet.panels.iter().enumerate() {
+            for b in &sheet.panels[i + 1..] {
+                let apart = a.bbox.max.x <= b.bbox.min.x
+                    || b.bbox.max.x <= a.bbox.min.x
+                    || a.bbox.max.y <= b.bbox.min.y
+                    || b.bbox.max.y <= a.bbox.min.y;
+                assert!(apart, "{name}: {} and {} overlap", a.name, b.name);
+            }
+            // Same outline, only moved.
+            let twin = placed.panels.iter().find(|q| q.name == a.name).unwrap();
+            let shift = a.bbox.min - twin.bbox.min;
+            assert!(((a.bbox.max - twin.bbox.max) - shift).abs().max_element() < 1e-9, "{name}: {}", a.name);
+        }
+        let width = sheet.panels.iter().map(|q| q.bbox.max.x).fold(0.0, f64::max);
+        let widest = sheet.panels.iter().map(|q| q.bbox.max.x - q.bbox.min.x).fold(0.0, f64::max);
+        assert!(width <= super::FLAT_ROW_WIDTH.max(widest) + 1e-9, "{name}: rows fit the fabric width");
+        assert_eq!(sheet.markers.len(), placed.markers.len());
+    }
+    assert_eq!("flat".parse::<Layout>(), Ok(Layout::Flat));
+    assert!("diagonal".parse::<Layout>().is_err());
+}

@@ -18,6 +18,10 @@
 //! * Bézier–Bézier: recursive halving with bounding boxes, tolerance 1e-12,
 //!   including the library's in-place list removal while iterating.
 //!
+//! Segments also offer what [`crate::svgpath`] needs to split SVG outlines the
+//! library's way: curve bounding boxes, crops (de Casteljau) and scaling through
+//! the power basis, with the library's arithmetic.
+//!
 //! Everything is `f64`; a point is `[x, y]` (the reference uses `x + iy`).
 
 /// A 2-D point `[x, y]` (the reference's complex number `x + 1j*y`).
@@ -60,6 +64,130 @@ impl Seg {
             Seg::Cubic(p) => cubic_length(p),
         }
     }
+
+    /// First point.
+    pub fn start(&self) -> P {
+        self.points()[0]
+    }
+
+    /// Last point.
+    pub fn end(&self) -> P {
+        let p = self.points();
+        p[p.len() - 1]
+    }
+
+    /// The same segment with its last point moved.
+    pub fn with_end(&self, end: P) -> Seg {
+        let mut s = *self;
+        match &mut s {
+            Seg::Line(p) => p[1] = end,
+            Seg::Quad(p) => p[2] = end,
+            Seg::Cubic(p) => p[3] = end,
+        }
+        s
+    }
+
+    /// Bounding box of the curve itself (`bbox()`): `[xmin, xmax, ymin, ymax]`.
+    pub fn bbox(&self) -> [f64; 4] {
+        match self {
+            Seg::Line([a, b]) => {
+                let (x0, x1) = min_max([a[0], b[0]].into_iter());
+                let (y0, y1) = min_max([a[1], b[1]].into_iter());
+                [x0, x1, y0, y1]
+            }
+            _ => bezier_bbox(&Bez::new(self.points())),
+        }
+    }
+
+    /// The piece between the parameters `t0 < t1` (`cropped`): a line through its
+    /// points at `t0` and `t1`; a curve by de Casteljau splits (`crop_bezier`).
+    pub fn cropped(&self, t0: f64, t1: f64) -> Seg {
+        if let Seg::Line(_) = self {
+            return Seg::Line([self.point(t0), self.point(t1)]);
+        }
+        let pts = if t0 == 0.0 {
+            split_bezier(self.points(), t1).0
+        } else if t1 == 1.0 {
+            split_bezier(self.points(), t0).1
+        } else {
+            // The library finds the end on the trimmed curve as the point closest to
+            // `point(t1)`; for a curve trimmed at `t0` that is this parameter (up
+            // to rounding).
+            let right = split_bezier(self.points(), t0).1;
+            split_bezier(&right, (t1 - t0) / (1.0 - t0)).0
+        };
+        seg_from_points(&pts)
+    }
+
+    /// Scaled by `s` about the origin (`scaled(s)`), the library's way: through the
+    /// power basis (`bez2poly`, coefficients scaled, `poly2bez`), so the control
+    /// points carry the same roundings. The points are then numpy `complex128`,
+    /// whose division by 3 multiplies by the reciprocal.
+    pub fn scaled(&self, s: f64) -> Seg {
+        let add = |a: P, b: P| [a[0] + b[0], a[1] + b[1]];
+        let sub = |a: P, b: P| [a[0] - b[0], a[1] - b[1]];
+        let mul = |k: f64, a: P| [k * a[0], k * a[1]];
+        let div = |a: P, k: f64| np_quot(a, [k, 0.0]);
+        match *self {
+            Seg::Line([p0, p1]) => {
+                let (c0, c1) = (mul(s, sub(p1, p0)), mul(s, p0));
+                Seg::Line([c1, add(c0, c1)])
+            }
+            Seg::Quad([p0, p1, p2]) => {
+                let c0 = mul(s, add(sub(p0, mul(2.0, p1)), p2));
+                let c1 = mul(s, mul(2.0, sub(p1, p0)));
+                let c2 = mul(s, p0);
+                Seg::Quad([c2, add(div(c1, 2.0), c2), add(add(c0, c1), c2)])
+            }
+            Seg::Cubic([p0, p1, p2, p3]) => {
+                let c0 = mul(s, add(add(mul(-1.0, p0), mul(3.0, sub(p1, p2))), p3));
+                let c1 = mul(s, mul(3.0, add(sub(p0, mul(2.0, p1)), p2)));
+                let c2 = mul(s, mul(3.0, sub(p1, p0)));
+                let c3 = mul(s, p0);
+                Seg::Cubic([
+                    c3,
+                    add(div(c2, 3.0), c3),
+                    add(div(add(c1, mul(2.0, c2)), 3.0), c3),
+                    add(add(add(c0, c1), c2), c3),
+                ])
+            }
+        }
+    }
+}
+
+/// The segment with these control points (2, 3 or 4 of them).
+fn seg_from_points(p: &[P]) -> Seg {
+    match *p {
+        [a, b] => Seg::Line([a, b]),
+        [a, b, c] => Seg::Quad([a, b, c]),
+        [a, b, c, d] => Seg::Cubic([a, b, c, d]),
+        _ => unreachable!("a segment has 2 to 4 points"),
+    }
+}
+
+/// `split_bezier`: de Casteljau with `(1 - t)·a + t·b` at every level.
+fn split_bezier(p: &[P], t: f64) -> (Vec<P>, Vec<P>) {
+    let mut left = Vec::with_capacity(p.len());
+    let mut right = Vec::with_capacity(p.len());
+    let mut cur: Vec<P> = p.to_vec();
+    loop {
+        left.push(cur[0]);
+        right.push(cur[cur.len() - 1]);
+        if cur.len() == 1 {
+            break;
+        }
+        cur = cur
+            .windows(2)
+            .map(|w| {
+                [
+                    (1.0 - t) * w[0][0] + t * w[1][0],
+                    (1.0 - t) * w[0][1] + t * w[1][1],
+                ]
+            })
+            .collect();
+    }
+    right.reverse();
+    (left, right)
 }
 
 /// How the reference holds a segment's points. pygarment's `as_curve()` builds

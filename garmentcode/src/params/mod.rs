@@ -17,6 +17,7 @@ mod fast;
 mod io;
 mod sample;
 mod space;
+mod writer;
 
 pub use io::{DesignError, from_values, read_design, read_design_values, write_design, write_values};
 pub use sample::{Sampler, sample_rng};
@@ -47,6 +48,7 @@ pub mod testing {
     }
 }
 pub use space::DesignSpace;
+pub use writer::DesignWriter;
 
 use std::fmt;
 

@@ -772,6 +772,77 @@ fn kind(v: &Value) -> String {
 
 #[cfg(test)]
 mod tests {
+
+    /// The allocating implementation this replaced, as the oracle.
+    /// A float as Python's `repr` writes it (shortest round-trip digits, scientific
+    /// notation below 1e-4 and from 1e16 on); `-0.0` is written `0.0`.
+    fn python_float_repr_oracle(x: f64) -> String {
+        if x == 0.0 {
+            return "0.0".to_string();
+        }
+        if x.is_nan() {
+            return "nan".to_string();
+        }
+        if x.is_infinite() {
+            return if x > 0.0 { "inf" } else { "-inf" }.to_string();
+        }
+        let sci = format!("{x:e}");
+        let (mantissa, exp) = sci.split_once('e').expect("LowerExp has an exponent");
+        let exp: i32 = exp.parse().expect("integer exponent");
+        let negative = mantissa.starts_with('-');
+        let digits: String = mantissa.chars().filter(|c| c.is_ascii_digit()).collect();
+        let sign = if negative { "-" } else { "" };
+        if !(-4..16).contains(&exp) {
+            let (head, tail) = digits.split_at(1);
+            let mant = if tail.is_empty() { head.to_string() } else { format!("{head}.{tail}") };
+            let esign = if exp < 0 { '-' } else { '+' };
+            return format!("{sign}{mant}e{esign}{:02}", exp.abs());
+        }
+        let n = digits.len() as i32;
+        let point = exp + 1; // digits before the decimal point
+        let body = if point <= 0 {
+            format!("0.{}{}", "0".repeat((-point) as usize), digits)
+        } else if point >= n {
+            format!("{}{}.0", digits, "0".repeat((point - n) as usize))
+        } else {
+            let (i, f) = digits.split_at(point as usize);
+            format!("{i}.{f}")
+        };
+        format!("{sign}{body}")
+    }
+
+    #[test]
+    fn float_repr_matches_the_straightforward_implementation() {
+        let mut bits: u64 = 0x9e37_79b9_7f4a_7c15;
+        // Where two shortest digit strings are equally close to `x` (a tie, as
+        // 1658206780088562.25 between ...2.2 and ...2.3), Python rounds half to even
+        // and Rust's `{:e}` does not always: then both must read back as `x`, have
+        // the same length, and ours must end in an even digit.
+        let check = |x: f64| {
+            let ours = python_float_repr(x);
+            let oracle = python_float_repr_oracle(x);
+            if ours != oracle {
+                assert_eq!(ours.parse::<f64>().ok(), Some(x), "{x:e}: {ours}");
+                assert_eq!(ours.len(), oracle.len(), "{x:e}: {ours} vs {oracle}");
+                let last = ours.trim_end_matches(".0").split('e').next().unwrap().bytes().last().unwrap();
+                assert_eq!((last - b'0') % 2, 0, "{x:e}: {ours} vs {oracle}");
+            }
+        };
+        for x in [0.0, -0.0, 1.0, -1.5, 0.1, 1e-4, 9.999e-5, 1e-5, 1e15, 1e16, 1.5e16, 123456789.0, 5e-324, f64::MAX, -f64::MIN_POSITIVE, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            check(x);
+        }
+        for _ in 0..200_000 {
+            bits ^= bits << 13;
+            bits ^= bits >> 7;
+            bits ^= bits << 17;
+            let x = f64::from_bits(bits);
+            if x.is_finite() {
+                check(x);
+                check((x.abs().log2().rem_euclid(60.0) - 30.0).exp2() * x.signum() * 1.2345);
+            }
+        }
+    }
+
     use super::*;
 
     #[test]
@@ -780,6 +851,7 @@ mod tests {
             (0.0, "0.0"),
             (-0.0, "0.0"),
             (1.0, "1.0"),
+            (1.6582067800885623e15, "1658206780088562.2"),
             (100.0, "100.0"),
             (-19.5679, "-19.5679"),
             (104.77250000000001, "104.77250000000001"),

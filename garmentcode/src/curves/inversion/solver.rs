@@ -7,15 +7,18 @@
 //! slides between samples the sampled max oscillates, giving many close local minima.
 //! That is what makes the reference's finite-difference L-BFGS-B chaotic.
 //!
-//! We solve it in two stages, both as the smooth problem in (x, z)
-//!   minimise F(x) + z^2  subject to  z >= |k(t; x)|  for the t of a constraint set:
-//! 1. ripple-free stage: t ranges over all of [0, 1] (the 70 samples plus every local
-//!    curvature maximum, located by Newton's method in t). Its minimiser moves smoothly
-//!    with the inputs and picks the basin;
-//! 2. polish: the reference's 70 samples only, started from stage 1, which converges to
-//!    the exact local minimiser of the reference objective in that basin.
+//! The first stage is always the smooth problem in (x, z)
+//!   minimise F(x) + z^2  subject to  z >= |k(t; x)|  for every t in [0, 1]
+//! (the 70 samples plus every local curvature maximum, located by Newton's method in t):
+//! the ripple-free problem, whose minimiser moves smoothly with the inputs. Then, by mode:
+//! * `Proximal` (default): a fixed number of proximal steps on the reference objective
+//!   ([`super::proximal`]): continuous in the inputs;
+//! * `Reference`: polish on the reference's 70 samples to convergence (the same SQP with
+//!   the samples as the constraint set), the exact local minimiser of the reference
+//!   objective in that basin, which jumps where the basin switches;
+//! * `RippleFree`: nothing.
 //!
-//! Each stage is SQP: minimise a quadratic model of the Lagrangian subject to the
+//! Each SQP stage minimises a quadratic model of the Lagrangian subject to the
 //! linearised curvature bounds (a 6-unknown QP solved exactly by a dual active-set
 //! method, [`super::qp`]; convexified along the active bounds' normals when needed), with
 //! exact analytic derivatives (B' and B'' are linear in x, so curvature gradients and
@@ -31,13 +34,13 @@ use super::objective::{END_REG, N_SAMPLES, chord_dir, unit};
 use super::qp;
 
 /// Number of unknowns: shifts of P1 (x, y), P2 (x, y) and of the end along the chord.
-const NX: usize = 5;
+pub(crate) const NX: usize = 5;
 /// The reference's curvature samples.
-const NS: usize = N_SAMPLES;
+pub(crate) const NS: usize = N_SAMPLES;
 /// At most this many refined curvature peaks (a cubic has at most a few).
-const NPEAK: usize = 6;
+pub(crate) const NPEAK: usize = 6;
 /// Constraint slots: samples, then peaks.
-const NC: usize = NS + NPEAK;
+pub(crate) const NC: usize = NS + NPEAK;
 /// Hard cap on SQP iterations per stage (far above what the logged vectors need).
 const MAX_ITER: usize = 200;
 /// Max damping increases per iteration before giving up.
@@ -53,7 +56,7 @@ const TOL_STAGE1: f64 = 1e-8;
 /// Stage 2 (and the ripple-free mode) stop at the rounding level.
 const TOL_STAGE2: f64 = 1e-15;
 
-type Mat = [[f64; NX]; NX];
+pub(crate) type Mat = [[f64; NX]; NX];
 
 /// Weights of B'(t) = sum_j w_j P_j.
 fn w1(t: f64) -> [f64; 4] {
@@ -102,7 +105,7 @@ fn tangent_term(a: V2, t: V2) -> (f64, V2, [V2; 2]) {
 
 /// Curve derivative data at one parameter t that does not depend on x.
 #[derive(Clone, Copy)]
-struct Sample {
+pub(crate) struct Sample {
     t: f64,
     /// B'(t) and B''(t) as weights on P0..P3.
     w1: [f64; 4],
@@ -198,7 +201,7 @@ fn curv_t(t: f64, p: &[V2; 4]) -> (f64, f64, f64) {
 
 /// For a curvature peak at sample s: d/dt of grad_x k, and d2k/dt2. The max over t of k
 /// has Hessian Hess_x k - k_xt k_xt^T / k_tt (the peak moves with x).
-fn curv_xt(s: &Sample, e3: &[V2; NX], p: &[V2; 4]) -> ([f64; NX], f64) {
+pub(crate) fn curv_xt(s: &Sample, e3: &[V2; NX], p: &[V2; 4]) -> ([f64; NX], f64) {
     let b1 = comb(&s.w1, p);
     let b2 = comb(&s.w2, p);
     let b3 = comb(&W3, p);
@@ -226,8 +229,17 @@ fn curv_xt(s: &Sample, e3: &[V2; NX], p: &[V2; 4]) -> ([f64; NX], f64) {
     (kxt, ktt)
 }
 
+/// Which curvature bound the solver enforces.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Bound {
+    /// The reference's 70 samples only.
+    Samples,
+    /// Every t in [0, 1] (samples plus refined peaks): the ripple-free objective.
+    Envelope,
+}
+
 /// Per-call constants: initial curve, targets, sample data.
-struct Setup {
+pub(crate) struct Setup {
     p: [V2; 4],
     dir: V2,
     t0: V2,
@@ -236,7 +248,7 @@ struct Setup {
     /// The reference's samples t_k = k/69 (as numpy's linspace computes them).
     grid: [Sample; NS],
     /// dB'''/dx_i.
-    e3: [V2; NX],
+    pub(crate) e3: [V2; NX],
     /// Bernstein weights of B' at the quadrature nodes, and dB'/dx_i there.
     gw1: [[f64; 4]; 64],
     /// dB'/dx_i at node q is c_i(q) * v_i with v_i in {ex, ey, ex, ey, dir}:
@@ -247,14 +259,14 @@ struct Setup {
 
 /// The curvature constraints at one iterate: 70 samples, then refined peaks.
 #[derive(Clone, Copy)]
-struct Cons {
+pub(crate) struct Cons {
     /// Peak samples (slots NS..NS+npeak).
-    peaks: [Sample; NPEAK],
-    npeak: usize,
+    pub(crate) peaks: [Sample; NPEAK],
+    pub(crate) npeak: usize,
     /// Signed curvature and gradient per slot; disabled slots are never binding.
-    kap: [f64; NC],
-    grad: [[f64; NX]; NC],
-    enabled: [bool; NC],
+    pub(crate) kap: [f64; NC],
+    pub(crate) grad: [[f64; NX]; NC],
+    pub(crate) enabled: [bool; NC],
 }
 
 impl Setup {
@@ -284,7 +296,7 @@ impl Setup {
     }
 
     /// Control points for shift x.
-    fn points(&self, x: &[f64; NX]) -> [V2; 4] {
+    pub(crate) fn points(&self, x: &[f64; NX]) -> [V2; 4] {
         let p = &self.p;
         [
             p[0],
@@ -323,7 +335,7 @@ impl Setup {
     }
 
     /// Smooth part F(x) with gradient and (full, symmetric) Hessian.
-    fn smooth_full(&self, x: &[f64; NX], p: &[V2; 4]) -> (f64, [f64; NX], Mat) {
+    pub(crate) fn smooth_full(&self, x: &[f64; NX], p: &[V2; 4]) -> (f64, [f64; NX], Mat) {
         let mut g = [0.0; NX];
         let mut h = [[0.0; NX]; NX];
         // Length and its derivatives by the fixed quadrature rule. With u = B'/|B'|,
@@ -412,9 +424,39 @@ impl Setup {
         (dl * dl + v0 + v1 + END_REG * x[4] * x[4], g, h)
     }
 
+    /// Gradient of the smooth part F(x) only (the proximal steps need no Hessian).
+    pub(crate) fn smooth_grad(&self, x: &[f64; NX], p: &[V2; 4]) -> [f64; NX] {
+        let d = self.dir;
+        let mut len = 0.0;
+        let mut gl = [0.0; NX];
+        for q in 0..64 {
+            let b1 = comb(&self.gw1[q], p);
+            let s = dot(b1, b1).sqrt();
+            len += GL64_W[q] * s;
+            let (ux, uy) = (b1[0] / s, b1[1] / s);
+            let uv = [ux, uy, ux, uy, ux * d[0] + uy * d[1]];
+            let c = &self.gc[q];
+            for i in 0..NX {
+                gl[i] += c[i] * uv[i];
+            }
+        }
+        let dl = len - self.target;
+        let mut g: [f64; NX] = std::array::from_fn(|i| 2.0 * dl * gl[i]);
+        let a = [p[1][0] - p[0][0], p[1][1] - p[0][1]];
+        let (_, g0, _) = tangent_term(a, self.t0);
+        g[0] += g0[0];
+        g[1] += g0[1];
+        let b = [p[3][0] - p[2][0], p[3][1] - p[2][1]];
+        let (_, g1, _) = tangent_term(b, self.t1);
+        g[2] -= g1[0];
+        g[3] -= g1[1];
+        g[4] += g1[0] * d[0] + g1[1] * d[1] + 2.0 * END_REG * x[4];
+        g
+    }
+
     /// Local maxima of |k| over t near grid maxima, refined by Newton's method in t.
-    /// Returns peaks strictly above the grid values, and marks the grid samples of each
-    /// peak's bracket as disabled (the peak dominates them).
+    /// Returns the peaks and marks the grid samples of each peak's bracket as disabled (the
+    /// peak dominates them).
     fn find_peaks(&self, p: &[V2; 4], kap: &[f64; NS], enabled: &mut [bool; NC]) -> ([Sample; NPEAK], usize) {
         let mut peaks = [self.grid[0]; NPEAK];
         let mut n = 0;
@@ -442,20 +484,21 @@ impl Setup {
                     break;
                 }
             }
-            let s = Sample::new(t, self.dir);
-            if sg * s.curv(p) > a {
-                peaks[n] = s;
-                n += 1;
-                for j in k.saturating_sub(1)..=(k + 1).min(NS - 1) {
-                    enabled[j] = false;
-                }
+            // Every refined maximum is kept, also one that sits on a sample (value equal to
+            // the grid value up to rounding): the constraint set, and the multipliers the
+            // proximal stage takes from it, must not depend on rounding there.
+            peaks[n] = Sample::new(t, self.dir);
+            n += 1;
+            for j in k.saturating_sub(1)..=(k + 1).min(NS - 1) {
+                enabled[j] = false;
             }
         }
         (peaks, n)
     }
 
-    /// Curvature constraints at p (with refined peaks if `cont`), values and gradients.
-    fn constraints(&self, p: &[V2; 4], cont: bool) -> Cons {
+    /// Curvature constraints at p (with refined peaks for `Bound::Envelope`), values and
+    /// gradients.
+    pub(crate) fn constraints(&self, p: &[V2; 4], bound: Bound) -> Cons {
         let mut c = Cons {
             peaks: [self.grid[0]; NPEAK],
             npeak: 0,
@@ -469,7 +512,7 @@ impl Setup {
             c.grad[k] = g;
             c.enabled[k] = true;
         }
-        if cont {
+        if bound == Bound::Envelope {
             let mut kap = [0.0; NS];
             kap.copy_from_slice(&c.kap[..NS]);
             let (peaks, n) = self.find_peaks(p, &kap, &mut c.enabled);
@@ -485,9 +528,30 @@ impl Setup {
         c
     }
 
-    /// The objective as the solver sees it (fixed-rule length; continuous max of |k| if
-    /// `cont`, else the max over the 70 samples).
-    fn objective(&self, x: &[f64; NX], cont: bool) -> f64 {
+    /// For each sample whose |k| is at least `frac` of the largest sampled |k|: |k| and the
+    /// gradient of |k| (sign(k) grad k); None for the others (their gradients are not computed).
+    pub(crate) fn sample_bounds_near_max(&self, p: &[V2; 4], frac: f64) -> [Option<(f64, [f64; NX])>; NS] {
+        // Compare squared curvatures c^2 / n^3 (no square roots for the samples left out).
+        let mut k2 = [0.0; NS];
+        let mut top = 0.0f64;
+        for k in 0..NS {
+            let b1 = comb(&self.grid[k].w1, p);
+            let b2 = comb(&self.grid[k].w2, p);
+            let (c, n) = (cross(b1, b2), dot(b1, b1));
+            k2[k] = c * c / (n * n * n);
+            top = top.max(k2[k]);
+        }
+        std::array::from_fn(|k| {
+            (k2[k] >= frac * frac * top).then(|| {
+                let (v, g) = self.grid[k].curv_grad(p);
+                (v.abs(), g.map(|gi| v.signum() * gi))
+            })
+        })
+    }
+
+    /// The objective as the solver sees it (fixed-rule length; max of |k| over the whole
+    /// curve for `Bound::Envelope`, else over the 70 samples).
+    fn objective(&self, x: &[f64; NX], bound: Bound) -> f64 {
         let p = self.points(x);
         let mut kap = [0.0; NS];
         let mut zmax = 0.0f64;
@@ -495,7 +559,7 @@ impl Setup {
             kap[k] = self.grid[k].curv(&p);
             zmax = zmax.max(kap[k].abs());
         }
-        if cont {
+        if bound == Bound::Envelope {
             let mut en = [true; NC];
             let (peaks, n) = self.find_peaks(&p, &kap, &mut en);
             for s in &peaks[..n] {
@@ -523,7 +587,7 @@ impl Setup {
 /// Diagnostics of one solve.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Stats {
-    /// SQP iterations of stage 1 (ripple-free) and stage 2 (polish).
+    /// SQP iterations of stage 1 (ripple-free) and stage 2 (polish, or proximal steps).
     pub iterations: [usize; 2],
     /// Objective evaluations at trial points.
     pub trials: usize,
@@ -531,15 +595,24 @@ pub struct Stats {
     pub soc: usize,
     /// Max-norm of the Lagrangian gradient at the end.
     pub kkt: f64,
-    /// True if both stages stopped because the model predicted no further decrease.
+    /// True if the SQP stages stopped because the model predicted no further decrease.
     pub converged: bool,
+    /// Proximal steps cut short by a QP breakdown (never seen; the map stays continuous
+    /// only without them).
+    pub qp_failures: usize,
 }
 
 /// Which problem to solve.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mode {
-    /// The reference objective (70 curvature samples), in the basin picked by the
-    /// ripple-free solution: never worse than the reference on its own objective.
+    /// Default: the ripple-free solution refined by [`super::proximal::STEPS`] proximal
+    /// steps on the reference objective. Continuous in the inputs, never worse than the
+    /// reference on the logged calls; steep (not discontinuous) where a curvature peak
+    /// crosses a sample.
+    Proximal,
+    /// The reference objective (70 curvature samples) minimised to convergence, in the basin
+    /// picked by the ripple-free solution: never worse than the reference on its own
+    /// objective, but jumps (up to ~0.4 cm) where the chosen ripple basin switches.
     Reference,
     /// The ripple-free objective (max curvature over the whole curve): continuous and
     /// piecewise smooth in the inputs, slightly higher reference objective at times.
@@ -551,24 +624,41 @@ pub fn solve(cps: [V2; 4], t0: V2, t1: V2, target: f64, mode: Mode) -> ([f64; NX
     solve_traced(cps, t0, t1, target, mode, false)
 }
 
-/// [`solve`], optionally printing one line per trial step to stderr (debug aid).
+/// [`Mode::Proximal`] with a chosen number of proximal steps (for studying the trade-off:
+/// more steps reach the ripple minima from closer to a ridge but make the map steeper).
+pub fn solve_proximal(cps: [V2; 4], t0: V2, t1: V2, target: f64, steps: usize) -> ([f64; NX], Stats) {
+    solve_impl(cps, t0, t1, target, Mode::Proximal, steps, false)
+}
+
+/// [`solve`], optionally printing one line per SQP trial step to stderr (debug aid).
 pub fn solve_traced(cps: [V2; 4], t0: V2, t1: V2, target: f64, mode: Mode, trace: bool) -> ([f64; NX], Stats) {
+    solve_impl(cps, t0, t1, target, mode, super::proximal::STEPS, trace)
+}
+
+fn solve_impl(cps: [V2; 4], t0: V2, t1: V2, target: f64, mode: Mode, steps: usize, trace: bool) -> ([f64; NX], Stats) {
     let s = Setup::new(cps, t0, t1, target);
     let mut st = Stats::default();
     // Fall back to the input curve if the guess is degenerate (never seen in practice).
     let mut x0 = s.initial_guess();
-    if !s.objective(&x0, true).is_finite() {
+    if !s.objective(&x0, Bound::Envelope).is_finite() {
         x0 = [0.0; NX];
     }
     let x = if mode == Mode::RippleFree {
-        let (x, ok) = run(&s, x0, true, TOL_STAGE2, 0, &mut st, trace);
-        st.converged = ok;
-        x
+        let r = run(&s, x0, Bound::Envelope, TOL_STAGE2, 0, &mut st, trace);
+        st.converged = r.ok;
+        r.x
+    } else if mode == Mode::Proximal {
+        let r = run(&s, x0, Bound::Envelope, TOL_STAGE2, 0, &mut st, trace);
+        st.converged = r.ok;
+        match super::proximal::frozen_model(&s, &r) {
+            Some(ginv) => super::proximal::refine(&s, r.x, &ginv, steps, &mut st),
+            None => r.x,
+        }
     } else {
-        let (xc, ok1) = run(&s, x0, true, TOL_STAGE1, 0, &mut st, trace);
-        let (x, ok2) = run(&s, xc, false, TOL_STAGE2, 1, &mut st, trace);
-        st.converged = ok1 && ok2;
-        x
+        let r1 = run(&s, x0, Bound::Envelope, TOL_STAGE1, 0, &mut st, trace);
+        let r2 = run(&s, r1.x, Bound::Samples, TOL_STAGE2, 1, &mut st, trace);
+        st.converged = r1.ok && r2.ok;
+        r2.x
     };
     // Degenerate input (e.g. non-finite values): return the input curve unchanged.
     if x.iter().all(|v| v.is_finite()) { (x, st) } else { ([0.0; NX], st) }
@@ -577,7 +667,7 @@ pub fn solve_traced(cps: [V2; 4], t0: V2, t1: V2, target: f64, mode: Mode, trace
 /// Lagrangian Hessian: the smooth part plus the multiplier-weighted curvature Hessians of
 /// the bounds that were active in the previous QP (at their locations then). A peak's bound
 /// is the max over t, whose Hessian has the extra term -k_xt k_xt^T / k_tt.
-fn lagrangian_hessian(s: &Setup, p: &[V2; 4], hf: &Mat, mult: &[f64; NC], prev: &Cons) -> Mat {
+pub(crate) fn lagrangian_hessian(s: &Setup, p: &[V2; 4], hf: &Mat, mult: &[f64; NC], prev: &Cons) -> Mat {
     let mut bm = *hf;
     for j in 0..NC {
         if mult[j] <= 0.0 {
@@ -607,7 +697,7 @@ fn lagrangian_hessian(s: &Setup, p: &[V2; 4], hf: &Mat, mult: &[f64; NC], prev: 
 
 /// The linearised bounds as QP constraints in y = (d, zeta):
 /// zeta - s_j grad_j . d - |k_j| >= 0 (disabled slots: 0 . y + 1 >= 0, never binding).
-fn linearised_bounds(c: &Cons) -> ([[f64; qp::N]; NC], [f64; NC]) {
+pub(crate) fn linearised_bounds(c: &Cons) -> ([[f64; qp::N]; NC], [f64; NC]) {
     let mut ca = [[0.0; qp::N]; NC];
     let mut cb = [1.0; NC];
     for j in 0..NC {
@@ -658,11 +748,19 @@ fn convexify(
     None
 }
 
-/// SQP from `x0`; `cont` selects the ripple-free (continuous max) constraint set.
-/// Returns the final point and whether it stopped on the convergence test.
-fn run(s: &Setup, x0: [f64; NX], cont: bool, tol: f64, stage: usize, st: &mut Stats, trace: bool) -> ([f64; NX], bool) {
+/// Result of one SQP run: the final point, whether it stopped on the convergence test,
+/// and the multipliers of the last accepted QP with the constraint set they belong to.
+pub(crate) struct RunOut {
+    pub(crate) x: [f64; NX],
+    pub(crate) ok: bool,
+    pub(crate) mult: [f64; NC],
+    pub(crate) prev: Option<Cons>,
+}
+
+/// SQP from `x0` on the objective with the curvature bound `bound`.
+fn run(s: &Setup, x0: [f64; NX], bound: Bound, tol: f64, stage: usize, st: &mut Stats, trace: bool) -> RunOut {
     let mut x = x0;
-    let mut f = s.objective(&x, cont);
+    let mut f = s.objective(&x, bound);
     // Multipliers of the last accepted QP and the constraint set they belong to.
     let mut mult = [0.0; NC];
     let mut prev: Option<Cons> = None;
@@ -672,7 +770,7 @@ fn run(s: &Setup, x0: [f64; NX], cont: bool, tol: f64, stage: usize, st: &mut St
         st.iterations[stage] = iter + 1;
         let p = s.points(&x);
         let (fs, gf, hf) = s.smooth_full(&x, &p);
-        let cons = s.constraints(&p, cont);
+        let cons = s.constraints(&p, bound);
         let lm_floor = 1e-6 * (0..NX).fold(1e-12f64, |a, i| a.max(hf[i][i].abs()));
         let bm = match &prev {
             Some(pc) => lagrangian_hessian(s, &p, &hf, &mult, pc),
@@ -723,14 +821,14 @@ fn run(s: &Setup, x0: [f64; NX], cont: bool, tol: f64, stage: usize, st: &mut St
             let model = fs + (0..NX).map(|i| gf[i] * d[i]).sum::<f64>() + 0.5 * quad + sol.y[NX] * sol.y[NX];
             let pred = f - model;
             if !(pred > tol * f) {
-                return (x, true);
+                return RunOut { x, ok: true, mult, prev };
             }
             let mut xt = x;
             for i in 0..NX {
                 xt[i] += d[i];
             }
             st.trials += 1;
-            let mut ft = s.objective(&xt, cont);
+            let mut ft = s.objective(&xt, bound);
             let mut rho = (f - ft) / pred;
             if rho < 0.1 && ft.is_finite() {
                 // Second-order correction: re-linearise the bounds around the actual
@@ -747,7 +845,7 @@ fn run(s: &Setup, x0: [f64; NX], cont: bool, tol: f64, stage: usize, st: &mut St
                         xs[i] += sol2.y[i];
                     }
                     st.trials += 1;
-                    let f2 = s.objective(&xs, cont);
+                    let f2 = s.objective(&xs, bound);
                     if (f - f2) / pred >= 0.1 {
                         st.soc += 1;
                         (xt, ft, rho) = (xs, f2, (f - f2) / pred);
@@ -775,7 +873,7 @@ fn run(s: &Setup, x0: [f64; NX], cont: bool, tol: f64, stage: usize, st: &mut St
             }
             if pred <= NOISE * f {
                 // Nothing left to gain above rounding noise (f has ~1e-17 absolute noise).
-                return (x, true);
+                return RunOut { x, ok: true, mult, prev };
             }
             // Rejected: damp harder. Besides the usual x4, make the damping at least 3x the
             // model curvature along the rejected step, which shortens a step that ran along
@@ -784,10 +882,10 @@ fn run(s: &Setup, x0: [f64; NX], cont: bool, tol: f64, stage: usize, st: &mut St
             lm = (4.0 * lm).max(lm_floor).max(3.0 * quad / dd.max(1e-300));
         }
         if !accepted {
-            return (x, false);
+            return RunOut { x, ok: false, mult, prev };
         }
     }
-    (x, false)
+    RunOut { x, ok: false, mult, prev }
 }
 
 #[cfg(test)]
@@ -824,6 +922,17 @@ mod tests {
                 let fd = (gp[j] - gm[j]) / (2.0 * e);
                 assert!(rel(fd, h[i][j], h[i][j].abs() + 1e-3) < 1e-6, "hess {i}{j}: {fd} vs {}", h[i][j]);
             }
+        }
+    }
+
+    #[test]
+    fn smooth_gradient_matches_full() {
+        let s = setup();
+        let p = s.points(&X);
+        let (_, g, _) = s.smooth_full(&X, &p);
+        let g2 = s.smooth_grad(&X, &p);
+        for i in 0..NX {
+            assert!(rel(g[i], g2[i], g[i].abs() + 1e-12) < 1e-13, "{i}: {} vs {}", g[i], g2[i]);
         }
     }
 
@@ -881,7 +990,7 @@ mod tests {
     fn peaks_are_local_maxima_of_the_curvature() {
         let s = setup();
         let p = s.points(&X);
-        let c = s.constraints(&p, true);
+        let c = s.constraints(&p, Bound::Envelope);
         assert!(c.npeak >= 1);
         for pk in &c.peaks[..c.npeak] {
             let a = pk.curv(&p).abs();

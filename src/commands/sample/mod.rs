@@ -1,0 +1,370 @@
+//! `garmentcode sample --n N --seed S --out DIR [--design-space FILE.yaml]
+//! [--bodies NAME,NAME|DIR] [--jobs J] [--shard I/K] [--formats json,svg,png]`:
+//! a dataset of random garments.
+//!
+//! The sampling itself is `garments::sample` (sample `i` depends on `(S, i)` alone);
+//! this command validates the input before doing any work, spreads the samples of
+//! its share over threads, writes each sample folder atomically, skips samples a
+//! previous run finished, shows progress and writes the summary.
+//!
+//! Shards: shard `I` of `K` makes the samples whose index `i` has `i % K == I`.
+//! Round-robin rather than blocks, so that a sample's shard does not depend on `N`
+//! (a dataset extended with a larger `N` keeps its samples in their shards) and
+//! every shard gets a similar mix of cheap and expensive designs.
+
+mod progress;
+mod store;
+mod summary;
+
+use crate::args::{Args, UsageError};
+use crate::commands::CliError;
+use crate::output::OutputSet;
+use garmentcode::params::write_design;
+use garmentcode::{Arena, Params};
+use garments::Design;
+use garments::sample::{DatasetSampler, MAX_ATTEMPTS, NamedBody, Outcome, sample_name};
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
+use store::{Formats, Record, Settings};
+
+/// The command line, checked.
+struct Options {
+    n: Option<u64>,
+    seed: u64,
+    out: PathBuf,
+    design_space: Option<String>,
+    bodies: Option<String>,
+    jobs: usize,
+    shard: Option<(u64, u64)>,
+    formats: Formats,
+    replay: Option<(u64, Option<u32>)>,
+}
+
+fn usage(m: String) -> CliError {
+    CliError::Usage(m)
+}
+
+fn number<T: std::str::FromStr>(flag: &str, v: &str, what: &str) -> Result<T, CliError> {
+    v.trim().parse().map_err(|_| usage(format!("sample --{flag}: expected {what}, got '{v}'")))
+}
+
+impl Options {
+    fn parse(args: &mut Args) -> Result<Options, CliError> {
+        let n = args.value("n")?;
+        let seed = args.value("seed")?;
+        let out = args.value("out")?.ok_or_else(|| UsageError("sample: --out DIR is required".into()))?;
+        let design_space = args.value("design-space")?;
+        let bodies = args.value("bodies")?;
+        let jobs = args.value("jobs")?;
+        let shard = args.value("shard")?;
+        let formats = args.value("formats")?;
+        let replay = args.value("replay")?;
+        let rest = args.finish()?;
+        if let Some(extra) = rest.first() {
+            return Err(usage(format!("sample: unexpected argument '{extra}'")));
+        }
+        let seed = seed.ok_or_else(|| usage("sample: --seed S is required (any whole number from 0 to 2^64-1)".into()))?;
+        let seed: u64 = number("seed", &seed, "a whole number from 0 to 2^64-1")?;
+        let replay = replay.map(|r| parse_replay(&r)).transpose()?;
+        let n = match (n, &replay) {
+            (Some(n), _) => {
+                let n: u64 = number("n", &n, "a number of samples")?;
+                if n == 0 {
+                    return Err(usage("sample --n: must be at least 1".into()));
+                }
+                Some(n)
+            }
+            (None, None) => return Err(usage("sample: --n N (the number of samples) is required".into())),
+            (None, Some(_)) => None,
+        };
+        let jobs = match jobs {
+            Some(j) => {
+                let j: usize = number("jobs", &j, "a number of threads")?;
+                if j == 0 {
+                    return Err(usage("sample --jobs: must be at least 1".into()));
+                }
+                j
+            }
+            None => std::thread::available_parallelism().map(|p| p.get()).unwrap_or(1),
+        };
+        let shard = shard.map(|s| parse_shard(&s)).transpose()?;
+        let formats = parse_formats(formats.as_deref().unwrap_or("json"))?;
+        Ok(Options { n, seed, out: PathBuf::from(out), design_space, bodies, jobs, shard, formats, replay })
+    }
+}
+
+/// `I/K` with `0 ≤ I < K`.
+fn parse_shard(s: &str) -> Result<(u64, u64), CliError> {
+    let bad = || usage(format!("sample --shard: expected I/K with 0 <= I < K (shard I of K, e.g. 0/4), got '{s}'"));
+    let (i, k) = s.split_once('/').ok_or_else(bad)?;
+    let (i, k): (u64, u64) = (i.trim().parse().map_err(|_| bad())?, k.trim().parse().map_err(|_| bad())?);
+    if k == 0 || i >= k {
+        return Err(bad());
+    }
+    Ok((i, k))
+}
+
+/// `INDEX` or `INDEX:ATTEMPT`.
+fn parse_replay(s: &str) -> Result<(u64, Option<u32>), CliError> {
+    let bad = || usage(format!("sample --replay: expected INDEX or INDEX:ATTEMPT (e.g. 42:3), got '{s}'"));
+    let (i, a) = match s.split_once(':') {
+        Some((i, a)) => (i, Some(a)),
+        None => (s, None),
+    };
+    let index = i.trim().parse().map_err(|_| bad())?;
+    let attempt = a.map(|a| a.trim().parse::<u32>().map_err(|_| bad())).transpose()?;
+    if attempt.is_some_and(|a| a >= MAX_ATTEMPTS) {
+        return Err(usage(format!("sample --replay: attempts are numbered 0 to {}", MAX_ATTEMPTS - 1)));
+    }
+    Ok((index, attempt))
+}
+
+fn parse_formats(s: &str) -> Result<Formats, CliError> {
+    let mut f = Formats::default();
+    for name in s.split(',').map(str::trim) {
+        match name {
+            "json" => f.json = true,
+            "svg" => f.svg = true,
+            "png" => f.png = true,
+            other => return Err(usage(format!("sample --formats: unknown format '{other}' (expected a list of json, svg, png)"))),
+        }
+    }
+    Ok(f)
+}
+
+/// The design space: the built-in one, or a design file's ranges and probabilities.
+fn load_space(file: Option<&str>) -> Result<(garmentcode::DesignSpace, String), CliError> {
+    let base = Design::design_space();
+    let Some(file) = file else { return Ok((base, "built-in".into())) };
+    let text = std::fs::read_to_string(file).map_err(|e| CliError::Input(format!("{file}: cannot read the design space: {e}")))?;
+    let space = garmentcode::DesignSpace::from_yaml(&text, file, &base).map_err(|e| CliError::Input(format!("invalid design space: {e}")))?;
+    Ok((space, file.to_string()))
+}
+
+/// Bodies: built-in names or body files separated by commas, or a folder of body
+/// files (`*.yaml`, or those in its `measurements/` folder as in GarmentCodeData's
+/// body samples), sorted by name. A body's name is its built-in name or file stem.
+fn load_bodies(arg: Option<&str>) -> Result<Vec<NamedBody>, CliError> {
+    let arg = arg.unwrap_or(garments::builtin::DEFAULT_BODY);
+    let mut files: Vec<String> = Vec::new();
+    let dir = Path::new(arg);
+    if dir.is_dir() {
+        let dir = if dir.join("measurements").is_dir() { dir.join("measurements") } else { dir.to_path_buf() };
+        let entries = std::fs::read_dir(&dir).map_err(|e| CliError::Input(format!("{}: cannot list bodies: {e}", dir.display())))?;
+        for e in entries {
+            let path = e.map_err(|e| CliError::Input(format!("{}: cannot list bodies: {e}", dir.display())))?.path();
+            if path.extension().is_some_and(|x| x == "yaml" || x == "yml") {
+                files.push(path.to_string_lossy().into_owned());
+            }
+        }
+        files.sort();
+        if files.is_empty() {
+            return Err(CliError::Input(format!("{}: no body files (*.yaml) in this folder", dir.display())));
+        }
+    } else {
+        files = arg.split(',').map(|s| s.trim().to_string()).collect();
+    }
+    let mut out: Vec<NamedBody> = Vec::new();
+    for item in files {
+        if item.is_empty() {
+            return Err(usage(format!("sample --bodies: empty body name in '{arg}'")));
+        }
+        let (body, name) = match garments::builtin::body(&item) {
+            Some(b) => (b, item.clone()),
+            None if Path::new(&item).is_file() => {
+                let text = std::fs::read_to_string(&item).map_err(|e| CliError::Input(format!("{item}: cannot read: {e}")))?;
+                let b = garmentcode::Body::from_yaml(&text, &item).map_err(|e| CliError::Input(e.to_string()))?;
+                let stem = Path::new(&item).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| item.clone());
+                (b, stem)
+            }
+            None => {
+                let known: Vec<&str> = garments::builtin::BODIES.iter().map(|(n, _)| *n).collect();
+                return Err(CliError::Input(format!(
+                    "unknown body '{item}': not a built-in body ({}), a body file or a folder of body files",
+                    known.join(", ")
+                )));
+            }
+        };
+        if out.iter().any(|b| b.name == name) {
+            return Err(CliError::Input(format!("body '{name}' is given twice")));
+        }
+        out.push(NamedBody { name, body });
+    }
+    Ok(out)
+}
+
+/// Create the output folder and check that files can be written into it.
+fn prepare_out(dir: &Path) -> Result<(), CliError> {
+    let fail = |e: std::io::Error| CliError::Input(format!("{}: cannot write the output folder: {e}", dir.display()));
+    std::fs::create_dir_all(dir).map_err(fail)?;
+    let probe = dir.join(format!(".write-test-{}", std::process::id()));
+    std::fs::write(&probe, b"").map_err(fail)?;
+    std::fs::remove_file(&probe).map_err(fail)
+}
+
+pub fn run(mut args: Args) -> Result<i32, CliError> {
+    let opts = Options::parse(&mut args)?;
+    let (space, space_label) = load_space(opts.design_space.as_deref())?;
+    let bodies = load_bodies(opts.bodies.as_deref())?;
+    let body_names: Vec<String> = bodies.iter().map(|b| b.name.clone()).collect();
+    let sampler = DatasetSampler::new(opts.seed, space, bodies).map_err(|e| CliError::Input(e.to_string()))?;
+    if let Some((index, attempt)) = opts.replay {
+        return replay(&sampler, &opts, index, attempt);
+    }
+    let n = opts.n.expect("--n is required without --replay");
+    prepare_out(&opts.out)?;
+
+    let settings = Settings::new(&sampler, opts.formats);
+    let (shard_i, shard_k) = opts.shard.unwrap_or((0, 1));
+    let wanted = |i: u64| i % shard_k == shard_i;
+    let existing = store::scan(&opts.out, &settings, n, wanted).map_err(CliError::Input)?;
+    if existing.removed_temps > 0 {
+        eprintln!("removed {} unfinished sample folder(s) of an interrupted run", existing.removed_temps);
+    }
+    let finished: HashSet<u64> = existing.finished.iter().map(|r| r.index).collect();
+    // Indices of this shard: shard_i, shard_i + K, ... below n.
+    let slots = if shard_i < n { (n - shard_i).div_ceil(shard_k) } else { 0 };
+    let todo = slots - finished.len() as u64;
+    if !finished.is_empty() {
+        eprintln!("resuming: {} of {slots} samples already made", finished.len());
+    }
+
+    let start = Instant::now();
+    let jobs = opts.jobs.min(todo.max(1) as usize);
+    let next = AtomicU64::new(0);
+    let stop = AtomicBool::new(false);
+    let (tx, rx) = mpsc::channel::<Result<Record, String>>();
+    let mut made: Vec<Record> = Vec::new();
+    let mut error: Option<String> = None;
+    let mut progress = progress::Progress::new(todo);
+    std::thread::scope(|scope| {
+        for _ in 0..jobs {
+            let tx = tx.clone();
+            let (next, stop, settings, finished, out) = (&next, &stop, &settings, &finished, &opts.out);
+            scope.spawn(move || {
+                let mut arena = Arena::new();
+                while !stop.load(Ordering::Relaxed) {
+                    let slot = next.fetch_add(1, Ordering::Relaxed);
+                    if slot >= slots {
+                        break;
+                    }
+                    let index = shard_i + slot * shard_k;
+                    if finished.contains(&index) {
+                        continue;
+                    }
+                    let result = store::make(out, settings, &mut arena, index);
+                    if result.is_err() {
+                        stop.store(true, Ordering::Relaxed);
+                    }
+                    if tx.send(result).is_err() {
+                        break;
+                    }
+                }
+            });
+        }
+        drop(tx);
+        loop {
+            match rx.recv_timeout(Duration::from_millis(100)) {
+                Ok(Ok(record)) => {
+                    made.push(record);
+                    progress.inc();
+                }
+                Ok(Err(e)) => {
+                    error.get_or_insert(e);
+                }
+                Err(mpsc::RecvTimeoutError::Timeout) => {}
+                Err(mpsc::RecvTimeoutError::Disconnected) => break,
+            }
+            progress.tick();
+        }
+    });
+    progress.finish();
+    if let Some(e) = error {
+        return Err(CliError::Failed(format!("{e}\nstopped; the samples written so far are complete, rerun to resume")));
+    }
+
+    let seconds = start.elapsed().as_secs_f64();
+    let n_made = made.len();
+    let mut records = existing.finished;
+    let resumed = records.len();
+    records.extend(made);
+    records.sort_by_key(|r| r.index);
+    let about = summary::About {
+        seed: opts.seed,
+        n,
+        shard: opts.shard,
+        design_space: &space_label,
+        bodies: body_names,
+        formats: opts.formats.names(),
+        seconds,
+        made: n_made,
+        resumed,
+        jobs,
+    };
+    let props = opts.out.join(summary::file_name(opts.shard));
+    let mut set = OutputSet::default();
+    set.add(&summary::file_name(opts.shard), summary::properties(&about, &records));
+    set.write(&opts.out).map_err(|e| CliError::Failed(format!("cannot write {}: {e}", props.display())))?;
+
+    let failed: Vec<String> = records.iter().filter(|r| r.accepted.is_none()).map(|r| sample_name(r.index)).collect();
+    let rejected: usize = records.iter().map(|r| r.rejections.len()).sum();
+    let rate = if seconds > 0.0 { n_made as f64 / seconds } else { 0.0 };
+    eprintln!(
+        "{}: {} samples ({n_made} made in {seconds:.2} s, {rate:.0}/s; {resumed} already there); {rejected} designs rejected and drawn again; summary in {}",
+        opts.out.display(),
+        records.len() - failed.len(),
+        props.display()
+    );
+    if !failed.is_empty() {
+        let shown: Vec<&str> = failed.iter().take(10).map(String::as_str).collect();
+        return Err(CliError::Failed(format!(
+            "{} sample(s) had every one of {MAX_ATTEMPTS} designs rejected: {}{} (see {})",
+            failed.len(),
+            shown.join(", "),
+            if failed.len() > shown.len() { ", ..." } else { "" },
+            props.display()
+        )));
+    }
+    Ok(0)
+}
+
+/// `--replay INDEX[:ATTEMPT]`: rebuild one sample (or one attempt of it, accepted
+/// or rejected) into `--out` as `garmentcode build` would, with its checks.
+fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<u32>) -> Result<i32, CliError> {
+    let mut arena = Arena::new();
+    let name = sample_name(index);
+    let attempt = match attempt {
+        Some(a) => a,
+        None => match sampler.draw_in(&mut arena, index) {
+            Outcome::Accepted(s) => s.attempt,
+            Outcome::Exhausted { .. } => {
+                return Err(CliError::Rejected(format!("{name}: every one of {MAX_ATTEMPTS} designs was rejected; replay one with --replay {index}:ATTEMPT")));
+            }
+        },
+    };
+    let (design, body) = sampler.attempt(index, attempt);
+    let verdict = match sampler.check(&mut arena, &design, body, &name) {
+        Ok(_) => "accepted".to_string(),
+        Err((reason, message)) => format!("rejected ({reason}: {message})"),
+    };
+    let mut set = OutputSet::default();
+    set.add("design_params.yaml", write_design(&design, sampler.space()));
+    set.add("body_measurements.yaml", sampler.body_for(body, &design).to_yaml());
+    // Rebuild without the filters to write whatever the garment program makes.
+    match garments::build::build_in(&mut arena, &design, &sampler.bodies()[body].body, &name) {
+        Ok(built) => {
+            set.add("specification.json", built.pattern.to_json().map_err(|e| CliError::Failed(e.to_string()))?);
+            if opts.formats.svg || opts.formats.png {
+                crate::commands::add_drawings(&mut set, &built.pattern, opts.formats.png, garmentcode::draw::Layout::Placed).map_err(|e| CliError::Failed(e.to_string()))?;
+            }
+            set.add("checks.json", built.checks.to_json());
+        }
+        Err(e) => set.add("error.txt", format!("{e}\n")),
+    }
+    set.write(&opts.out).map_err(|e| CliError::Input(format!("cannot write {}: {e}", opts.out.display())))?;
+    eprintln!("{name} attempt {attempt} on {}: {verdict}; wrote {}", sampler.bodies()[body].name, opts.out.display());
+    Ok(0)
+}

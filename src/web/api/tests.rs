@@ -1,0 +1,317 @@
+//! The API without sockets: requests in, responses out.
+
+use super::*;
+
+fn request(method: &str, path: &str, body: &str) -> Request {
+    Request {
+        method: method.into(),
+        path: path.into(),
+        headers: vec![("content-type".into(), "application/json".into())],
+        body: body.as_bytes().to_vec(),
+    }
+}
+
+/// Status and JSON body of a request.
+fn call(method: &str, path: &str, body: &str) -> (u16, Json) {
+    let r = route(&request(method, path, body));
+    let v = if r.content_type.starts_with("application/json") {
+        serde_json::from_slice(&r.body).unwrap_or_else(|e| panic!("{method} {path}: response is not JSON: {e}"))
+    } else {
+        Json::Null
+    };
+    (r.status, v)
+}
+
+fn post(path: &str, body: Json) -> (u16, Json) {
+    call("POST", path, &body.to_string())
+}
+
+#[test]
+fn schema_lists_every_parameter_with_its_range_and_group() {
+    let (status, s) = call("GET", "/api/schema", "");
+    assert_eq!(status, 200);
+    let params = s["params"].as_array().unwrap();
+    assert_eq!(params.len(), space().params().len());
+    assert!(params.len() > 100);
+    let find = |p: &str| params.iter().find(|x| x["path"] == p).unwrap_or_else(|| panic!("{p}"));
+    let length = find("shirt.length");
+    assert_eq!(length["type"], "float");
+    assert_eq!(length["group"], "shirt");
+    assert_eq!(length["name"], "length");
+    assert_eq!(length["range"], json!([0.5, 3.5]));
+    assert!(!length["description"].as_str().unwrap().is_empty());
+    let cuff = find("sleeve.cuff.type");
+    assert_eq!(cuff["group"], "sleeve.cuff");
+    assert_eq!(cuff["type"], "select_null");
+    assert!(cuff["options"].as_array().unwrap().contains(&Json::Null));
+    assert_eq!(find("collar.fc_angle")["range"], json!([70, 110]), "int ranges are integers");
+    // Groups in document order, meta first, nested ones after their parent.
+    let groups: Vec<&str> = s["groups"].as_array().unwrap().iter().map(|g| g.as_str().unwrap()).collect();
+    assert_eq!(groups[0], "meta");
+    let pos = |g: &str| groups.iter().position(|x| *x == g).unwrap();
+    assert!(pos("sleeve") < pos("sleeve.cuff"));
+    assert!(s["bodies"].as_array().unwrap().iter().any(|b| b == "mean_all"));
+    assert!(s["designs"].as_array().unwrap().iter().any(|d| d["name"] == "t-shirt"));
+    assert_eq!(s["measurements"].as_array().unwrap().len(), 26);
+    assert!(s["derived"].as_array().unwrap().iter().all(|d| d["name"].as_str().unwrap().starts_with('_')));
+}
+
+#[test]
+fn the_page_and_its_files_are_served() {
+    for (path, ty) in [("/", "text/html"), ("/app.js", "text/javascript"), ("/style.css", "text/css"), ("/icon.svg", "image/svg+xml")] {
+        let r = route(&request("GET", path, ""));
+        assert_eq!(r.status, 200, "{path}");
+        assert!(r.content_type.starts_with(ty), "{path}: {}", r.content_type);
+        assert!(!r.body.is_empty());
+    }
+    // Offline: nothing is loaded from elsewhere.
+    for path in ["/", "/app.js", "/style.css"] {
+        let text = String::from_utf8(route(&request("GET", path, "")).body).unwrap();
+        assert!(!text.contains("http://") && !text.contains("https://") && !text.contains("//cdn"), "{path} loads nothing external");
+    }
+}
+
+#[test]
+fn pattern_of_a_design_on_a_body() {
+    let (status, r) = post("/api/pattern", json!({ "design": { "meta.upper": "Shirt", "sleeve.sleeveless": false }, "body": "mean_female", "name": "tee" }));
+    assert_eq!(status, 200);
+    assert_eq!(r["ok"], true, "{r}");
+    assert_eq!(r["name"], "tee");
+    assert!(r["svg"].as_str().unwrap().starts_with("<?xml"));
+    assert!(r["svg"].as_str().unwrap().contains("right_ftorso"), "panel names are drawn");
+    assert!(r["specification"]["pattern"]["panels"].get("right_ftorso").is_some());
+    assert_eq!(r["specification"]["properties"]["units_in_meter"], 100);
+    assert_eq!(r["warnings"], json!([]));
+    assert_eq!(r["checks"]["self_intersecting"], false);
+    assert_eq!(r["body"]["name"], "mean_female");
+    assert!(r["body"]["derived"]["_waist_level"].as_f64().unwrap() > 50.0);
+    // The same garment as the library builds directly, byte for byte.
+    let design = garments::builtin::design("t-shirt").unwrap();
+    let body = garments::builtin::body("mean_female").unwrap();
+    let direct = garments::build::build(&design, &body, "tee").unwrap().pattern.to_json().unwrap();
+    let text = pattern_text(&json!({ "design": { "meta.upper": "Shirt", "sleeve.sleeveless": false }, "body": "mean_female", "name": "tee" })).unwrap();
+    assert!(text.ends_with(&format!("\"specification\":{direct}}}")));
+}
+
+#[test]
+fn responses_are_deterministic() {
+    let req = json!({ "design": { "meta.bottom": "SkirtCircle", "meta.upper": "FittedShirt" } }).to_string();
+    let a = route(&request("POST", "/api/pattern", &req));
+    let b = route(&request("POST", "/api/pattern", &req));
+    assert_eq!(a, b);
+}
+
+#[test]
+fn design_file_text_is_accepted() {
+    let text = "design:\n  meta:\n    bottom:\n      v: Pants\n  pants:\n    length:\n      v: 0.8\n";
+    let (status, r) = post("/api/pattern", json!({ "design": text }));
+    assert_eq!(status, 200);
+    assert_eq!(r["ok"], true, "{r}");
+    assert!(r["panels"].as_array().unwrap().iter().any(|p| p.as_str().unwrap().contains("pant")), "{}", r["panels"]);
+    // And read into values for the page's controls.
+    let (status, d) = post("/api/design", json!({ "design": text }));
+    assert_eq!(status, 200);
+    assert_eq!(d["design"]["meta.bottom"], "Pants");
+    assert_eq!(d["design"]["pants.length"], 0.8);
+    assert_eq!(d["design"]["shirt.length"], 1.2, "others take their defaults");
+}
+
+#[test]
+fn values_outside_ranges_are_refused_with_path_and_range() {
+    let (status, r) = post("/api/pattern", json!({ "design": { "shirt.length": 9.0 } }));
+    assert_eq!(status, 400);
+    let e = r["error"].as_str().unwrap();
+    assert!(e.contains("design.shirt.length") && e.contains("[0.5, 3.5]"), "{e}");
+    let (status, r) = post("/api/pattern", json!({ "design": { "meta.upper": "Cape", "collar.fc_angle": 90.5, "nope.x": 1, "pants.length": [1] } }));
+    assert_eq!(status, 400);
+    let problems: Vec<&str> = r["problems"].as_array().unwrap().iter().map(|p| p.as_str().unwrap()).collect();
+    assert_eq!(problems.len(), 4, "{problems:?}");
+    assert!(problems.iter().any(|p| p.contains("design.meta.upper") && p.contains("FittedShirt")));
+    assert!(problems.iter().any(|p| p.contains("design.collar.fc_angle") && p.contains("integer")));
+    assert!(problems.iter().any(|p| p.contains("design.nope.x") && p.contains("unknown parameter")));
+    assert!(problems.iter().any(|p| p.contains("design.pants.length") && p.contains("array")));
+    // In a design file too, with the line.
+    let (status, r) = post("/api/design", json!({ "design": "design:\n  shirt:\n    width:\n      v: 2.0\n" }));
+    assert_eq!(status, 400);
+    let e = r["error"].as_str().unwrap();
+    assert!(e.contains("design.shirt.width") && e.contains("[1.0, 1.3]") && e.contains("line 4"), "{e}");
+}
+
+#[test]
+fn a_design_the_library_refuses_is_explained() {
+    let (status, r) = post("/api/pattern", json!({ "design": {} }));
+    assert_eq!(status, 200);
+    assert_eq!(r["ok"], false);
+    assert!(r["error"].as_str().unwrap().contains("empty garment"), "{r}");
+    assert!(r.get("svg").is_none());
+}
+
+#[test]
+fn warnings_of_the_reference_checks_are_reported() {
+    // A shirt longer than the body: too long for the floor.
+    let (status, r) = post("/api/pattern", json!({ "design": { "meta.upper": "Shirt", "shirt.length": 3.5 }, "body": { "measurements": { "height": 120.0 } } }));
+    assert_eq!(status, 200);
+    assert_eq!(r["ok"], true, "{r}");
+    let w: Vec<&str> = r["warnings"].as_array().unwrap().iter().map(|x| x.as_str().unwrap()).collect();
+    assert!(w.iter().any(|x| x.contains("too long")), "{w:?}");
+    assert_eq!(r["checks"]["total_length_ok"], false);
+}
+
+#[test]
+fn bodies_by_name_file_or_measurements() {
+    let (status, b) = call("GET", "/api/body/mean_male", "");
+    assert_eq!(status, 200);
+    assert!(b["measurements"]["height"].as_f64().unwrap() > 150.0);
+    assert!(b["derived"]["_leg_length"].is_number());
+    assert_eq!(call("GET", "/api/body/nobody", "").0, 404);
+    // Measurements over a base body.
+    let (status, b) = post("/api/body", json!({ "body": { "base": "mean_all", "measurements": { "waist": 70.0, "_waist_level": 1.0 } } }));
+    assert_eq!(status, 200);
+    assert_eq!(b["measurements"]["waist"], 70.0);
+    // A body file.
+    let file = garments::builtin::BODIES[1].1;
+    let (status, b) = post("/api/body", json!({ "body": { "yaml": file } }));
+    assert_eq!(status, 200, "{b}");
+    // Bad measurements name the measurement.
+    let (status, r) = post("/api/body", json!({ "body": { "measurements": { "waist": -3, "wings": 2, "height": "tall" } } }));
+    assert_eq!(status, 400);
+    let e = r["error"].as_str().unwrap();
+    assert!(e.contains("body.waist") && e.contains("positive") && e.contains("body.wings") && e.contains("body.height"), "{e}");
+    let (status, r) = post("/api/body", json!({ "body": { "yaml": "body:\n  waist: 3\n" } }));
+    assert_eq!(status, 400);
+    assert!(r["error"].as_str().unwrap().contains("missing measurement"), "{r}");
+    assert_eq!(post("/api/pattern", json!({ "body": "nobody" })).0, 400);
+    assert_eq!(post("/api/pattern", json!({ "body": 3 })).0, 400);
+    assert_eq!(post("/api/pattern", json!({ "body": { "base": "mean_all", "shape": "round" } })).0, 400);
+}
+
+#[test]
+fn built_in_designs_load_and_build() {
+    for (name, _) in garments::builtin::DESIGNS {
+        let (status, d) = call("GET", &format!("/api/design/{name}"), "");
+        assert_eq!(status, 200, "{name}");
+        let (status, r) = post("/api/pattern", json!({ "design": d["design"], "name": name }));
+        assert_eq!(status, 200);
+        assert_eq!(r["ok"], true, "{name}: {r}");
+    }
+    assert_eq!(call("GET", "/api/design/cape", "").0, 404);
+}
+
+#[test]
+fn random_designs_come_from_the_sampler_and_are_reproducible() {
+    let (status, a) = post("/api/random", json!({ "seed": 7 }));
+    assert_eq!(status, 200);
+    assert_eq!(a["ok"], true, "{a}");
+    let (_, b) = post("/api/random", json!({ "seed": 7 }));
+    assert_eq!(a, b);
+    let (_, c) = post("/api/random", json!({ "seed": 8 }));
+    assert_ne!(a["design"], c["design"]);
+    // The design is sample 0 of the dataset sampler for this seed and body.
+    let dataset = garments::sample::DatasetSampler::with_defaults(7);
+    let garments::sample::Outcome::Accepted(sample) = dataset.draw(0) else { panic!("sample 0 of seed 7 is accepted") };
+    assert_eq!(a["draw"], sample.attempt);
+    assert_eq!(a["design"], values_json(&design_to_values(&sample.design)));
+    // And it builds.
+    let (_, r) = post("/api/pattern", json!({ "design": a["design"] }));
+    assert_eq!(r["ok"], true);
+    assert_eq!(post("/api/random", json!({ "seed": -1 })).0, 400);
+    assert_eq!(post("/api/random", json!({ "seed": "x" })).0, 400);
+}
+
+#[test]
+fn files_and_zip_hold_every_file() {
+    let req = json!({ "design": { "meta.upper": "Shirt" }, "name": "top" });
+    let (status, f) = post("/api/files", req.clone());
+    assert_eq!(status, 200);
+    for name in ["design_params.yaml", "body_measurements.yaml", "specification.json", "pattern.svg", "checks.json"] {
+        assert!(f["files"][name].as_str().is_some_and(|t| !t.is_empty()), "{name}");
+    }
+    // The design file reads back to the same design.
+    let (_, d) = post("/api/design", json!({ "design": f["files"]["design_params.yaml"] }));
+    assert_eq!(d["design"]["meta.upper"], "Shirt");
+    let r = route(&request("POST", "/api/zip", &req.to_string()));
+    assert_eq!(r.status, 200);
+    assert_eq!(r.content_type, "application/zip");
+    assert!(r.headers.iter().any(|(n, v)| *n == "Content-Disposition" && v.contains("top.zip")));
+    let entries = zip::read_stored(&r.body).unwrap();
+    let names: Vec<&str> = entries.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(names, ["top/design_params.yaml", "top/body_measurements.yaml", "top/specification.json", "top/pattern.svg", "top/checks.json"]);
+    assert_eq!(entries[2].1, f["files"]["specification.json"].as_str().unwrap().as_bytes());
+    // A refused design still has its input files, and the reason.
+    let (_, f) = post("/api/files", json!({ "design": {} }));
+    assert_eq!(f["ok"], false);
+    assert!(f["files"]["error.txt"].as_str().unwrap().contains("empty garment"));
+    assert!(f["files"].get("specification.json").is_none());
+}
+
+#[test]
+fn malformed_requests_get_4xx_with_a_message() {
+    let cases: &[(&str, &str, &str, u16)] = &[
+        ("POST", "/api/pattern", "{not json", 400),
+        ("POST", "/api/pattern", "[1, 2]", 400),
+        ("POST", "/api/pattern", "{\"design\": 3}", 400),
+        ("POST", "/api/pattern", "{\"design\": {}, \"extra\": 1}", 400),
+        ("POST", "/api/pattern", "{\"name\": \"../etc\"}", 400),
+        ("POST", "/api/pattern", "{\"name\": 5}", 400),
+        ("GET", "/api/pattern", "", 405),
+        ("POST", "/api/schema", "", 405),
+        ("DELETE", "/", "", 405),
+        ("GET", "/api/nothing", "", 404),
+        ("GET", "/etc/passwd", "", 404),
+    ];
+    for (method, path, body, status) in cases {
+        let (s, r) = call(method, path, body);
+        assert_eq!(s, *status, "{method} {path} {body}: {r}");
+        assert_eq!(r["ok"], false);
+        assert!(!r["error"].as_str().unwrap().is_empty());
+    }
+    let mut r = request("POST", "/api/pattern", "design=1");
+    r.headers = vec![("content-type".into(), "application/x-www-form-urlencoded".into())];
+    assert_eq!(route(&r).status, 415);
+    assert!(route(&request("GET", "/api/pattern", "")).headers.iter().any(|(n, v)| *n == "Allow" && v == "POST"));
+    // An empty body is an empty request: the defaults.
+    assert_eq!(call("POST", "/api/design", "").0, 200);
+}
+
+#[test]
+fn extreme_bodies_are_answered_not_panicked() {
+    for m in [json!({ "height": 1e300 }), json!({ "waist": 1e-300 }), json!({ "shoulder_w": 1000.0, "neck_w": 900.0 }), json!({ "arm_length": 0.001 })] {
+        for design in [json!({ "meta.upper": "Shirt", "sleeve.sleeveless": false }), json!({ "meta.bottom": "Pants" }), json!({ "meta.bottom": "SkirtCircle", "meta.wb": "FittedWB" })] {
+            let (status, r) = post("/api/pattern", json!({ "design": design, "body": { "measurements": m } }));
+            assert!(status == 200 || status == 400, "{status}: {r}");
+            assert!(r["ok"].is_boolean());
+        }
+    }
+}
+
+fn sampler() -> garmentcode::params::Sampler {
+    garmentcode::params::Sampler::new(space().clone())
+}
+
+#[test]
+fn random_designs_on_every_body_never_break_the_api() {
+    let bodies: Vec<&str> = garments::builtin::BODIES.iter().map(|(n, _)| *n).collect();
+    for i in 0..40u64 {
+        let values = sampler().sample_values(&mut garmentcode::params::sample_rng(99, i));
+        let (status, r) = post("/api/pattern", json!({ "design": values_json(&values), "body": bodies[i as usize % bodies.len()] }));
+        assert_eq!(status, 200, "{r}");
+        if r["ok"] == true {
+            assert!(r["svg"].is_string() && r["specification"].is_object());
+        } else {
+            assert!(!r["error"].as_str().unwrap().is_empty());
+        }
+    }
+}
+
+#[test]
+fn layout_chooses_the_drawing() {
+    let (_, placed) = post("/api/pattern", json!({ "design": { "meta.upper": "Shirt" } }));
+    let (_, flat) = post("/api/pattern", json!({ "design": { "meta.upper": "Shirt" }, "layout": "flat" }));
+    assert_eq!(placed["ok"], true);
+    assert_eq!(flat["ok"], true);
+    assert_ne!(placed["svg"], flat["svg"], "a different arrangement");
+    assert_eq!(placed["specification"], flat["specification"], "the same pattern");
+    let (status, r) = post("/api/pattern", json!({ "layout": "diagonal" }));
+    assert_eq!(status, 400);
+    assert!(r["error"].as_str().unwrap().contains("placed or flat"), "{r}");
+}

@@ -1,0 +1,399 @@
+//! The configurator in a real browser: headless Chromium driven over WebDriver
+//! (chromedriver) by a tiny client on std sockets and serde_json.
+//!
+//! A user's session: load the page, open a group and move a slider, switch a
+//! categorical parameter, see the drawing change each time; empty the garment and
+//! see the rejection explained over the last drawing; upload a design file and see
+//! the controls and drawing follow; download `specification.json` and the zip and
+//! check them against the library; change the body; draw a random design.
+//!
+//! Needs `chromium` and `chromedriver` (Debian: `apt-get install chromium
+//! chromium-driver`). It runs when `GARMENTCODE_BROWSER_TEST=1` (`.ci/run` sets
+//! it, after installing them) and then fails if they are missing; otherwise it is
+//! skipped with a message, so that `cargo test` works on machines without a
+//! browser.
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::net::{SocketAddr, TcpListener, TcpStream};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use serde_json::{Value as Json, json};
+
+const ENABLE: &str = "GARMENTCODE_BROWSER_TEST";
+/// The W3C element reference key.
+const ELEMENT: &str = "element-6066-11e4-a52e-4f735466cecf";
+
+/// A child process, stopped on drop.
+struct Proc(Child);
+
+impl Drop for Proc {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+fn find_program(names: &[&str]) -> Option<PathBuf> {
+    let path = std::env::var_os("PATH")?;
+    for dir in std::env::split_paths(&path) {
+        for n in names {
+            let p = dir.join(n);
+            if p.is_file() {
+                return Some(p);
+            }
+        }
+    }
+    None
+}
+
+fn free_port() -> u16 {
+    TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port()
+}
+
+// ---------------------------------------------------------------------------
+// A minimal HTTP client (for chromedriver)
+
+fn http(addr: SocketAddr, method: &str, path: &str, body: Option<&Json>) -> Json {
+    let body = body.map(|b| b.to_string()).unwrap_or_default();
+    let mut s = TcpStream::connect(addr).unwrap_or_else(|e| panic!("chromedriver at {addr}: {e}"));
+    s.set_read_timeout(Some(Duration::from_secs(60))).unwrap();
+    let req = format!(
+        "{method} {path} HTTP/1.1\r\nHost: {addr}\r\nContent-Type: application/json; charset=utf-8\r\nContent-Length: {}\r\nConnection: close\r\n\r\n{body}",
+        body.len()
+    );
+    s.write_all(req.as_bytes()).unwrap();
+    let mut reader = BufReader::new(s);
+    let mut status_line = String::new();
+    reader.read_line(&mut status_line).unwrap();
+    let mut length = None;
+    loop {
+        let mut line = String::new();
+        reader.read_line(&mut line).unwrap();
+        if line == "\r\n" || line.is_empty() {
+            break;
+        }
+        if let Some((n, v)) = line.split_once(':')
+            && n.eq_ignore_ascii_case("content-length")
+        {
+            length = v.trim().parse::<usize>().ok();
+        }
+    }
+    let mut buf = Vec::new();
+    match length {
+        Some(n) => {
+            buf.resize(n, 0);
+            reader.read_exact(&mut buf).unwrap();
+        }
+        None => {
+            reader.read_to_end(&mut buf).unwrap();
+        }
+    }
+    let v: Json = serde_json::from_slice(&buf).unwrap_or_else(|e| panic!("{method} {path}: {e}: {}", String::from_utf8_lossy(&buf)));
+    if let Some(err) = v["value"].get("error") {
+        panic!("WebDriver {method} {path}: {err}: {}", v["value"]["message"]);
+    }
+    v["value"].clone()
+}
+
+// ---------------------------------------------------------------------------
+// WebDriver session
+
+struct Browser {
+    driver: SocketAddr,
+    session: String,
+    _chromedriver: Proc,
+}
+
+impl Drop for Browser {
+    fn drop(&mut self) {
+        let path = format!("/session/{}", self.session);
+        let _ = std::panic::catch_unwind(|| http(self.driver, "DELETE", &path, None));
+    }
+}
+
+impl Browser {
+    fn start(chromium: &Path, chromedriver: &Path, downloads: &Path) -> Browser {
+        let port = free_port();
+        let child = Command::new(chromedriver)
+            .arg(format!("--port={port}"))
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap_or_else(|e| panic!("cannot start {}: {e}", chromedriver.display()));
+        let proc = Proc(child);
+        let driver: SocketAddr = format!("127.0.0.1:{port}").parse().unwrap();
+        let t = Instant::now();
+        while TcpStream::connect(driver).is_err() {
+            assert!(t.elapsed() < Duration::from_secs(20), "chromedriver did not start");
+            std::thread::sleep(Duration::from_millis(50));
+        }
+        let caps = json!({ "capabilities": { "alwaysMatch": {
+            "browserName": "chrome",
+            "goog:chromeOptions": {
+                "binary": chromium.to_string_lossy(),
+                "args": ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1400,900", "--no-first-run"],
+                "prefs": {
+                    "download.default_directory": downloads.to_string_lossy(),
+                    "download.prompt_for_download": false,
+                    "profile.default_content_setting_values.automatic_downloads": 1,
+                },
+            },
+        }}});
+        let v = http(driver, "POST", "/session", Some(&caps));
+        let session = v["sessionId"].as_str().expect("a session id").to_string();
+        Browser { driver, session, _chromedriver: proc }
+    }
+
+    fn cmd(&self, method: &str, path: &str, body: Option<Json>) -> Json {
+        http(self.driver, method, &format!("/session/{}{path}", self.session), body.as_ref())
+    }
+
+    fn goto(&self, url: &str) {
+        self.cmd("POST", "/url", Some(json!({ "url": url })));
+    }
+
+    fn find(&self, css: &str) -> String {
+        let v = self.cmd("POST", "/element", Some(json!({ "using": "css selector", "value": css })));
+        v[ELEMENT].as_str().unwrap_or_else(|| panic!("no element {css}: {v}")).to_string()
+    }
+
+    fn find_xpath(&self, xpath: &str) -> String {
+        let v = self.cmd("POST", "/element", Some(json!({ "using": "xpath", "value": xpath })));
+        v[ELEMENT].as_str().unwrap_or_else(|| panic!("no element {xpath}: {v}")).to_string()
+    }
+
+    fn click(&self, element: &str) {
+        self.cmd("POST", &format!("/element/{element}/click"), Some(json!({})));
+    }
+
+    fn keys(&self, element: &str, text: &str) {
+        self.cmd("POST", &format!("/element/{element}/value"), Some(json!({ "text": text })));
+    }
+
+    fn js(&self, script: &str) -> Json {
+        self.cmd("POST", "/execute/sync", Some(json!({ "script": script, "args": [] })))
+    }
+
+    /// Wait until `script` returns something truthy; panics with `what` and the
+    /// page's status after `secs`.
+    fn wait(&self, what: &str, secs: u64, script: &str) -> Json {
+        let t = Instant::now();
+        loop {
+            let v = self.js(script);
+            if !(v.is_null() || v == json!(false) || v == json!("") || v == json!(0)) {
+                return v;
+            }
+            if t.elapsed() > Duration::from_secs(secs) {
+                let status = self.js("return document.getElementById('status').textContent");
+                panic!("timed out waiting for {what}; status: {status}");
+            }
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    }
+
+    fn version(&self) -> u64 {
+        self.js("return Number(document.getElementById('drawing').dataset.version)").as_u64().unwrap()
+    }
+
+    /// Wait for a drawing newer than `after`, settled (no change pending, status ok
+    /// or warning).
+    fn wait_drawing(&self, what: &str, after: u64) -> String {
+        let script = format!(
+            "const d = document.getElementById('drawing'), s = document.getElementById('status');
+             return Number(d.dataset.version) > {after} && s.dataset.idle === 'true' && (s.dataset.state === 'ok' || s.dataset.state === 'warning') ? d.innerHTML : null"
+        );
+        self.wait(what, 20, &script).as_str().unwrap().to_string()
+    }
+
+    fn screenshot(&self, file: &Path) {
+        let b64 = self.cmd("GET", "/screenshot", None);
+        if let Some(png) = b64.as_str().and_then(base64) {
+            let _ = std::fs::write(file, png);
+        }
+    }
+}
+
+fn base64(s: &str) -> Option<Vec<u8>> {
+    let val = |c: u8| -> Option<u32> {
+        Some(match c {
+            b'A'..=b'Z' => c - b'A',
+            b'a'..=b'z' => c - b'a' + 26,
+            b'0'..=b'9' => c - b'0' + 52,
+            b'+' => 62,
+            b'/' => 63,
+            _ => return None,
+        } as u32)
+    };
+    let bytes: Vec<u8> = s.bytes().filter(|&c| c != b'=' && !c.is_ascii_whitespace()).collect();
+    let mut out = Vec::with_capacity(bytes.len() * 3 / 4);
+    for chunk in bytes.chunks(4) {
+        let mut n = 0u32;
+        for (i, &c) in chunk.iter().enumerate() {
+            n |= val(c)? << (18 - 6 * i);
+        }
+        let b = n.to_be_bytes();
+        out.extend_from_slice(&b[1..chunk.len()]);
+    }
+    Some(out)
+}
+
+/// Wait for a finished download of `name` in `dir`.
+fn downloaded(dir: &Path, name: &str) -> Vec<u8> {
+    let path = dir.join(name);
+    let t = Instant::now();
+    loop {
+        let partial = std::fs::read_dir(dir).unwrap().flatten().any(|e| e.file_name().to_string_lossy().ends_with(".crdownload"));
+        if path.is_file() && !partial {
+            return std::fs::read(&path).unwrap();
+        }
+        assert!(t.elapsed() < Duration::from_secs(20), "{name} was not downloaded into {}", dir.display());
+        std::thread::sleep(Duration::from_millis(50));
+    }
+}
+
+fn start_server() -> (Proc, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_garmentcode"))
+        .args(["serve", "--port", "0"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("start garmentcode serve");
+    let mut line = String::new();
+    BufReader::new(child.stdout.take().unwrap()).read_line(&mut line).unwrap();
+    let url = line.split_whitespace().find(|w| w.starts_with("http://")).unwrap_or_else(|| panic!("no address in {line:?}")).to_string();
+    (Proc(child), url)
+}
+
+const UPLOADED_DESIGN: &str = "\
+# A fitted top over trousers (a design file in the reference's format).
+design:
+  meta:
+    upper:
+      v: FittedShirt
+    bottom:
+      v: Pants
+  pants:
+    length:
+      v: 0.8
+    flare:
+      v: 1.1
+";
+
+#[test]
+fn a_user_designs_a_garment_in_the_browser() {
+    if std::env::var(ENABLE).as_deref() != Ok("1") {
+        eprintln!(
+            "\n*** SKIPPED the browser test: set {ENABLE}=1 to run it (needs chromium and chromedriver; .ci/run installs them and sets it) ***\n"
+        );
+        return;
+    }
+    let started = Instant::now();
+    let chromium = find_program(&["chromium", "chromium-browser", "google-chrome"])
+        .expect("the browser test needs chromium (apt-get install chromium chromium-driver)");
+    let chromedriver = find_program(&["chromedriver"]).expect("the browser test needs chromedriver (apt-get install chromium-driver)");
+    let scratch = Path::new(env!("CARGO_TARGET_TMPDIR")).join("browser");
+    let _ = std::fs::remove_dir_all(&scratch);
+    let downloads = scratch.join("downloads");
+    std::fs::create_dir_all(&downloads).unwrap();
+
+    let (_server, url) = start_server();
+    let b = Browser::start(&chromium, &chromedriver, &downloads);
+
+    // The page loads, builds its controls from the schema and draws the t-shirt.
+    b.goto(&url);
+    let first = b.wait_drawing("the first drawing", 0);
+    assert!(first.contains("right_ftorso"), "the t-shirt's panels are drawn with their names");
+    let n_controls = b.js("return document.querySelectorAll('.param').length").as_u64().unwrap();
+    assert!(n_controls > 100, "a control per parameter: {n_controls}");
+    for (path, kind) in [("shirt.length", "input[type=range]"), ("sleeve.sleeveless", "input[type=checkbox]"), ("meta.bottom", "select"), ("sleeve.cuff.type", "select")] {
+        b.find(&format!(".param[data-path='{path}'] {kind}"));
+    }
+    b.screenshot(&scratch.join("1-loaded.png"));
+
+    // Open the shirt group and move the length slider with the keyboard.
+    let v = b.version();
+    b.click(&b.find("details[data-group='shirt'] > summary"));
+    let slider = b.find(".param[data-path='shirt.length'] input[type=range]");
+    b.keys(&slider, &"\u{E014}".repeat(20)); // ArrowRight
+    let longer = b.wait_drawing("the drawing after the slider moved", v);
+    assert_ne!(longer, first, "the drawing changed");
+    let shown = b.js("return Number(document.querySelector(\".param[data-path='shirt.length'] input.num\").value)").as_f64().unwrap();
+    assert!(shown > 1.2 && shown <= 3.5, "the value box follows the slider: {shown}");
+
+    // Switch a categorical parameter: a circle skirt under the shirt.
+    let v = b.version();
+    b.click(&b.find_xpath("//div[@data-path='meta.bottom']//option[text()='SkirtCircle']"));
+    let with_skirt = b.wait_drawing("the drawing with a skirt", v);
+    assert!(with_skirt.contains("skirt_front") && with_skirt.contains("right_ftorso"), "skirt and shirt drawn");
+
+    // Nothing left to sew: the page explains, and keeps the last drawing.
+    b.click(&b.find_xpath("//div[@data-path='meta.bottom']//option[text()='none']"));
+    b.click(&b.find_xpath("//div[@data-path='meta.upper']//option[text()='none']"));
+    let why = b.wait(
+        "the rejection",
+        20,
+        "const s = document.getElementById('status'); return s.dataset.state === 'rejected' && s.dataset.idle === 'true' && !document.getElementById('overlay').hidden ? document.getElementById('overlay').textContent : null",
+    );
+    assert!(why.as_str().unwrap().contains("empty garment"), "{why}");
+    assert!(b.js("return document.querySelector('#drawing svg') !== null").as_bool().unwrap(), "never a blank page");
+    b.screenshot(&scratch.join("2-rejected.png"));
+
+    // Upload a design file: the controls and the drawing follow.
+    let file = scratch.join("upload_design.yaml");
+    std::fs::write(&file, UPLOADED_DESIGN).unwrap();
+    let v = b.version();
+    b.keys(&b.find("#upload"), &file.to_string_lossy());
+    let uploaded = b.wait_drawing("the uploaded design's drawing", v);
+    assert!(uploaded.contains("pant_f_r"), "trousers drawn");
+    assert!(b.js("return document.getElementById('overlay').hidden").as_bool().unwrap(), "the rejection is gone");
+    let bottom = b.js("const s = document.querySelector(\".param[data-path='meta.bottom'] select\"); return s.options[s.selectedIndex].text");
+    assert_eq!(bottom, "Pants");
+    assert_eq!(b.js("return document.querySelector(\".param[data-path='pants.length'] input.num\").value"), "0.8");
+    b.screenshot(&scratch.join("3-uploaded.png"));
+
+    // Download the specification: the library's pattern of the uploaded file.
+    b.click(&b.find("#download-spec"));
+    let spec = downloaded(&downloads, "specification.json");
+    let design = garmentcode::params::read_design(UPLOADED_DESIGN, "upload", &<garments::Design as garmentcode::Params>::design_space()).unwrap();
+    let body = garments::builtin::body("mean_all").unwrap();
+    let expected = garments::build::build(&design, &body, "upload_design").unwrap().pattern.to_json().unwrap();
+    assert_eq!(String::from_utf8(spec.clone()).unwrap(), expected, "the downloaded specification is the library's");
+    let parsed = garmentcode::Pattern::from_json(&expected).unwrap();
+    assert!(parsed.panels.iter().any(|p| p.name == "pant_f_r"));
+
+    // And everything as one zip.
+    b.click(&b.find("#download-zip"));
+    let zip = downloaded(&downloads, "upload_design.zip");
+    let entries = garmentcode_cli::web::zip::read_stored(&zip).unwrap();
+    let names: Vec<&str> = entries.iter().map(|(n, _)| n.as_str()).collect();
+    assert!(names.contains(&"upload_design/design_params.yaml") && names.contains(&"upload_design/pattern.svg"), "{names:?}");
+    let zspec = entries.iter().find(|(n, _)| n.ends_with("specification.json")).unwrap();
+    assert_eq!(zspec.1, spec);
+
+    // The body tab: another built-in body retargets the garment; derived values shown.
+    b.click(&b.find("#tab-body"));
+    let v = b.version();
+    b.click(&b.find("#body-select option[value='mean_male']"));
+    let male = b.wait_drawing("the drawing on another body", v);
+    assert_ne!(male, uploaded);
+    let waist_level = b.js("return document.querySelector(\".derived[data-name='_waist_level'] output\").textContent");
+    assert!(waist_level.as_str().unwrap().parse::<f64>().unwrap() > 50.0, "{waist_level}");
+    let v = b.version();
+    let waist = b.find("#m-waist");
+    b.keys(&waist, "\u{E009}a\u{E000}70\n"); // Ctrl+A, release, type, Enter
+    b.wait_drawing("the drawing for a smaller waist", v);
+    assert_eq!(b.js("return document.getElementById('m-waist').value"), "70");
+    assert_eq!(b.js("return document.getElementById('body-select').value"), "", "the body is now custom");
+    b.screenshot(&scratch.join("4-body.png"));
+
+    // A random design from the sampler.
+    b.click(&b.find("#tab-design"));
+    let v = b.version();
+    b.click(&b.find("#random"));
+    b.wait_drawing("a random design", v);
+    b.screenshot(&scratch.join("5-random.png"));
+
+    eprintln!("browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
+}

@@ -1,0 +1,279 @@
+//! The `garmentcode` command line as a user runs it: outputs, exit codes, and clear
+//! errors without panics or partial output folders on bad input.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_garmentcode"))
+}
+
+/// A fresh, empty scratch folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn run(args: &[&str], cwd: &Path) -> Output {
+    bin().args(args).current_dir(cwd).output().unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// Exit code, and no panic message anywhere.
+fn code(o: &Output) -> i32 {
+    let err = stderr(o);
+    assert!(!err.contains("panicked"), "panic: {err}");
+    o.status.code().expect("exited normally")
+}
+
+#[test]
+fn build_default_writes_every_file_and_is_deterministic() {
+    let dir = scratch("build_default");
+    let o = run(&["build", "--out", "a"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    for f in ["specification.json", "pattern.svg", "pattern.png", "design_params.yaml", "body_measurements.yaml", "checks.json"] {
+        assert!(dir.join("a").join(f).metadata().unwrap().len() > 0, "{f} written");
+    }
+    assert!(stderr(&o).contains("t-shirt on mean_all"), "{}", stderr(&o));
+    // The written design and body files reproduce the garment byte for byte.
+    let o = run(&["build", "--design", "a/design_params.yaml", "--body", "a/body_measurements.yaml", "--name", "t-shirt", "--out", "b"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    for f in ["specification.json", "pattern.svg", "pattern.png", "design_params.yaml", "body_measurements.yaml", "checks.json"] {
+        let (x, y) = (std::fs::read(dir.join("a").join(f)).unwrap(), std::fs::read(dir.join("b").join(f)).unwrap());
+        assert!(x == y, "{f} differs between the built-in design and its written files");
+    }
+    let checks: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("a/checks.json")).unwrap()).unwrap();
+    for k in ["param_combinations", "total_length", "floor_length", "total_length_ok", "self_intersecting"] {
+        assert!(checks.get(k).is_some(), "checks.json has {k}");
+    }
+    // The pattern passes `check`.
+    let o = run(&["check", "a/specification.json"], &dir);
+    assert_eq!(code(&o), 0, "{}", stdout(&o));
+}
+
+#[test]
+fn build_named_designs_and_bodies() {
+    let dir = scratch("build_named");
+    for (design, body) in [("jumpsuit", "mean_male"), ("sundress", "f_smpl_average_A40")] {
+        let o = run(&["build", "--design", design, "--body", body, "--out", design, "--no-png"], &dir);
+        assert_eq!(code(&o), 0, "{}", stderr(&o));
+        assert!(dir.join(design).join("specification.json").exists());
+        assert!(!dir.join(design).join("pattern.png").exists(), "--no-png");
+    }
+    // The flat layout draws the same pattern differently; a bad layout is refused.
+    let o = run(&["build", "--design", "jumpsuit", "--body", "mean_male", "--layout", "flat", "--out", "flat", "--no-png"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let read = |d: &str, f: &str| std::fs::read(dir.join(d).join(f)).unwrap();
+    assert_eq!(read("flat", "specification.json"), read("jumpsuit", "specification.json"));
+    assert_ne!(read("flat", "pattern.svg"), read("jumpsuit", "pattern.svg"));
+    let o = run(&["build", "--layout", "diagonal", "--out", "bad"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("placed or flat"));
+}
+
+/// Bad design files: each gives exit 2, names the file, the parameter path and
+/// what is allowed, and writes nothing.
+#[test]
+fn bad_design_files_are_refused_clearly() {
+    let dir = scratch("bad_designs");
+    let cases: &[(&str, &str, &[&str])] = &[
+        ("range.yaml", "design:\n  shirt:\n    length:\n      v: 9.0\n", &["range.yaml", "design.shirt.length", "[0.5, 3.5]"]),
+        ("unknown.yaml", "design:\n  meta:\n    upperr:\n      v: Shirt\n", &["unknown.yaml", "design.meta.upperr", "design.meta.upper"]),
+        ("option.yaml", "design:\n  meta:\n    upper:\n      v: Tunic\n", &["option.yaml", "design.meta.upper", "FittedShirt"]),
+        ("malformed.yaml", "design:\n  meta:\n    upper: [\n", &["malformed.yaml", "line 3"]),
+        ("nan.yaml", "design:\n  shirt:\n    length:\n      v: .nan\n", &["nan.yaml", "design.shirt.length", "finite"]),
+        ("type.yaml", "design:\n  shirt:\n    strapless:\n      v: maybe\n", &["type.yaml", "design.shirt.strapless"]),
+        ("notyaml.yaml", "\u{0}\u{1}binary", &["notyaml.yaml"]),
+    ];
+    for (file, text, expected) in cases {
+        std::fs::write(dir.join(file), text).unwrap();
+        let o = run(&["build", "--design", file, "--out", "out"], &dir);
+        assert_eq!(code(&o), 2, "{file}: {}", stderr(&o));
+        let err = stderr(&o);
+        for e in *expected {
+            assert!(err.contains(e), "{file}: '{e}' not in: {err}");
+        }
+        assert!(!dir.join("out").exists(), "{file}: nothing written");
+    }
+}
+
+#[test]
+fn bad_bodies_and_missing_files_are_refused_clearly() {
+    let dir = scratch("bad_bodies");
+    std::fs::write(dir.join("neg.yaml"), "body:\n  height: -3\n").unwrap();
+    let o = run(&["build", "--body", "neg.yaml", "--out", "out"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("body.height") && stderr(&o).contains("positive"), "{}", stderr(&o));
+    let o = run(&["build", "--body", "nobody", "--out", "out"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("mean_all"), "lists the built-in bodies: {}", stderr(&o));
+    let o = run(&["build", "--design", "missing.yaml", "--out", "out"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("missing.yaml"));
+    assert!(!dir.join("out").exists());
+}
+
+#[test]
+fn rejected_designs_write_nothing() {
+    let dir = scratch("rejected");
+    // No upper garment, waistband or bottom: the reference refuses an empty pattern.
+    std::fs::write(dir.join("empty.yaml"), "design:\n  meta:\n    upper:\n      v: null\n").unwrap();
+    let o = run(&["build", "--design", "empty.yaml", "--out", "out"], &dir);
+    assert_ne!(code(&o), 0);
+    assert!(stderr(&o).contains("empty garment"), "{}", stderr(&o));
+    assert!(!dir.join("out").exists());
+    // An existing output folder keeps its contents when a build is rejected.
+    std::fs::create_dir_all(dir.join("kept")).unwrap();
+    std::fs::write(dir.join("kept/specification.json"), "old").unwrap();
+    let o = run(&["build", "--design", "empty.yaml", "--out", "kept"], &dir);
+    assert_ne!(code(&o), 0);
+    assert_eq!(std::fs::read_to_string(dir.join("kept/specification.json")).unwrap(), "old");
+}
+
+#[test]
+fn strict_turns_failed_checks_into_rejections() {
+    let dir = scratch("strict");
+    // A long shirt over a long skirt reaches below the floor.
+    let design = "design:\n  meta:\n    upper:\n      v: Shirt\n    bottom:\n      v: SkirtCircle\n  shirt:\n    length:\n      v: 3.5\n  flare-skirt:\n    length:\n      v: 0.95\n";
+    std::fs::write(dir.join("long.yaml"), design).unwrap();
+    let relaxed = run(&["build", "--design", "long.yaml", "--out", "relaxed", "--no-png"], &dir);
+    assert_eq!(code(&relaxed), 0, "{}", stderr(&relaxed));
+    let checks: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("relaxed/checks.json")).unwrap()).unwrap();
+    if checks["total_length_ok"] == false {
+        assert!(stderr(&relaxed).contains("warning"), "{}", stderr(&relaxed));
+        let strict = run(&["build", "--design", "long.yaml", "--out", "strict", "--strict"], &dir);
+        assert_eq!(code(&strict), 1, "{}", stderr(&strict));
+        assert!(!dir.join("strict").exists());
+    } else {
+        panic!("the test design should be too long: {checks}");
+    }
+}
+
+#[test]
+fn check_reports_problems_as_text_and_json() {
+    let dir = scratch("check");
+    assert_eq!(code(&run(&["build", "--out", "t", "--no-png"], &dir)), 0);
+    let spec: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("t/specification.json")).unwrap()).unwrap();
+
+    let mut dangling = spec.clone();
+    dangling["pattern"]["stitches"][0][0]["panel"] = "ghost".into();
+    std::fs::write(dir.join("dangling.json"), serde_json::to_string(&dangling).unwrap()).unwrap();
+    let o = run(&["check", "dangling.json"], &dir);
+    assert_eq!(code(&o), 1);
+    assert!(stdout(&o).contains("ghost"), "{}", stdout(&o));
+    let o = run(&["check", "dangling.json", "--format", "json"], &dir);
+    assert_eq!(code(&o), 1);
+    let report: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let problems = report.as_array().or_else(|| report["problems"].as_array()).expect("a list of problems");
+    assert!(problems.iter().any(|p| p["severity"] == "error" && p["kind"].is_string()), "{report}");
+
+    let o = run(&["check", "t/specification.json", "--format", "json"], &dir);
+    assert_eq!(code(&o), 0);
+    let o = run(&["check", "t/specification.json", "--format", "xml"], &dir);
+    assert_eq!(code(&o), 2);
+}
+
+#[test]
+fn bad_pattern_files_are_refused_clearly() {
+    let dir = scratch("bad_specs");
+    assert_eq!(code(&run(&["build", "--out", "t", "--no-png"], &dir)), 0);
+    let text = std::fs::read_to_string(dir.join("t/specification.json")).unwrap();
+    let spec: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let panel = spec["pattern"]["panels"].as_object().unwrap().keys().next().unwrap().clone();
+    let mut wrong_type = spec.clone();
+    wrong_type["pattern"]["panels"][&panel]["vertices"][0][0] = "x".into();
+    let mut bad_index = spec.clone();
+    bad_index["pattern"]["panels"][&panel]["edges"][0]["endpoints"][0] = 9999.into();
+    let files: Vec<(&str, String, &str)> = vec![
+        ("truncated.json", text[..text.len() / 2].to_string(), "malformed JSON"),
+        ("wrong_type.json", wrong_type.to_string(), "vertices[0][0]"),
+        ("bad_index.json", bad_index.to_string(), "9999"),
+        ("nan.json", text.replacen("0.0", "NaN", 1), "malformed JSON"),
+        ("empty.json", String::new(), "malformed JSON"),
+    ];
+    for (file, content, expected) in &files {
+        std::fs::write(dir.join(file), content).unwrap();
+        for args in [vec!["check", file], vec!["render", file, "--out", "r"]] {
+            let o = run(&args, &dir);
+            let c = code(&o);
+            assert!(c == 1 || c == 2, "{args:?}: exit {c}");
+            let all = stderr(&o) + &stdout(&o);
+            assert!(all.contains(expected), "{args:?}: '{expected}' not in {all}");
+            assert!(!dir.join("r").exists(), "{args:?}: no partial output");
+        }
+    }
+    let o = run(&["render", "missing.json", "--out", "r"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("missing.json"));
+}
+
+#[test]
+fn render_re_emits_and_draws() {
+    let dir = scratch("render");
+    let case = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/cases/case-002/specification.json");
+    let o = run(&["render", case.to_str().unwrap(), "--out", "r"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let svg = std::fs::read_to_string(dir.join("r/pattern.svg")).unwrap();
+    assert!(svg.starts_with("<?xml") || svg.starts_with("<svg"), "{}", &svg[..60]);
+    assert!(std::fs::read(dir.join("r/pattern.png")).unwrap().starts_with(b"\x89PNG"));
+    // Geometrically the same pattern as the reference wrote.
+    let o = run(&["compare", case.to_str().unwrap(), "r/specification.json"], &dir);
+    assert_eq!(code(&o), 0, "{}", stdout(&o));
+    assert!(stdout(&o).contains("1 passed, 0 failed"));
+}
+
+#[test]
+fn schema_formats() {
+    let dir = scratch("schema");
+    let o = run(&["schema"], &dir);
+    assert_eq!(code(&o), 0);
+    let yaml = stdout(&o);
+    assert!(yaml.starts_with("design:\n"), "{}", &yaml[..40]);
+    let o = run(&["schema", "--format", "json-schema"], &dir);
+    assert_eq!(code(&o), 0);
+    let schema: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(schema.get("properties").is_some() || schema.get("$defs").is_some(), "{schema}");
+    let o = run(&["schema", "--format", "table"], &dir);
+    assert_eq!(code(&o), 0);
+    assert!(stdout(&o).lines().count() >= 120);
+    let o = run(&["schema", "--format", "toml"], &dir);
+    assert_eq!(code(&o), 2);
+}
+
+#[test]
+fn compare_judges_case_folders() {
+    let dir = scratch("compare");
+    let cases = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/cases");
+    let one = |c: &str| cases.join(c).join("specification.json").to_str().unwrap().to_string();
+    let o = run(&["compare", &one("case-001"), &one("case-001")], &dir);
+    assert_eq!(code(&o), 0);
+    let o = run(&["compare", &one("case-001"), &one("case-002")], &dir);
+    assert_eq!(code(&o), 1);
+    assert!(stdout(&o).contains("FAIL"));
+    let o = run(&["compare", "--cases", cases.to_str().unwrap(), cases.to_str().unwrap()], &dir);
+    assert_eq!(code(&o), 0);
+    assert!(stdout(&o).contains("62 passed, 0 failed"), "{}", stdout(&o));
+    let o = run(&["compare", "nope.json", &one("case-001")], &dir);
+    assert_eq!(code(&o), 2);
+}
+
+#[test]
+fn usage_errors() {
+    let dir = scratch("usage");
+    for args in [vec!["frobnicate"], vec!["build", "--bogus"], vec!["build"], vec!["check"], vec!["render", "x.json"], vec![]] {
+        let o = run(&args, &dir);
+        assert_eq!(code(&o), 2, "{args:?}");
+    }
+    let o = run(&["help"], &dir);
+    assert_eq!(code(&o), 0);
+    assert!(stdout(&o).contains("USAGE"));
+}
