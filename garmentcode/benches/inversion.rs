@@ -10,9 +10,16 @@
 use std::time::Instant;
 
 use garmentcode::Vec2;
-use garmentcode::curves::match_tangents;
+use garmentcode::curves::inversion::{Mode, match_tangents_with_stats};
 
 type Call = ([Vec2; 4], Vec2, Vec2, f64);
+
+/// One inversion, computed afresh: `curves::match_tangents` memoises its results
+/// per thread, so timing it on repeated inputs would time the memo.
+fn match_tangents(cps: [Vec2; 4], t0: Vec2, t1: Vec2, len: f64) -> [Vec2; 4] {
+    let p = cps.map(|v| [v.x, v.y]);
+    match_tangents_with_stats(p, [t0.x, t0.y], [t1.x, t1.y], len, Mode::Proximal).0.map(|q| Vec2::new(q[0], q[1]))
+}
 
 fn calls() -> Vec<Call> {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/inversion/data/all_vectors.json");

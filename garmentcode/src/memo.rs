@@ -69,7 +69,37 @@ pub(crate) fn edge_points<R>(key: EdgeKey, make: impl FnOnce() -> Vec<Vec2>, f: 
     })
 }
 
+/// Key of one curve fit: which fit (`b'I'` the cubic inversion) and the bits of
+/// every input it reads.
+pub(crate) type FitKey = (u8, [u64; 13]);
+
+/// A fit's result: up to four points.
+pub(crate) type FitResult = [[f64; 2]; 4];
+
+thread_local! {
+    static FITS: RefCell<HashMap<FitKey, FitResult, BuildHasherDefault<WordHasher>>> = RefCell::default();
+}
+
+/// The memoised result of the curve fit `key`, computed with `make` once. The
+/// two sleeves of a symmetric garment (and a sleeve's front and back where their
+/// armholes agree) invert the very same curve.
+pub(crate) fn curve_fit(key: FitKey, make: impl FnOnce() -> FitResult) -> FitResult {
+    if let Some(r) = FITS.with(|c| c.borrow().get(&key).copied()) {
+        return r;
+    }
+    let r = make();
+    FITS.with(|c| {
+        let mut c = c.borrow_mut();
+        if c.len() >= CAPACITY {
+            c.clear();
+        }
+        c.insert(key, r);
+    });
+    r
+}
+
 /// Forget every entry (a new garment starts).
 pub(crate) fn clear() {
     EDGE_POINTS.with(|c| c.borrow_mut().clear());
+    FITS.with(|c| c.borrow_mut().clear());
 }

@@ -104,18 +104,64 @@ pub struct Built {
 
 /// Build `design` on `body` into the pattern named `name`, reusing `arena`.
 pub fn build_in(arena: &mut Arena, design: &Design, body: &Body, name: &str) -> Result<Built, BuildError> {
-    arena.clear();
+    let garment = new_garment(arena, design, body)?;
+    let (total_length, floor_length) = lengths(arena, &garment, body);
+    let self_intersecting = garment.is_self_intersecting(arena);
+    let pattern = garment.assemble(arena, name)?;
     let param_combinations = check_param_combinations(design);
+    let checks = Checks { param_combinations, total_length, floor_length, total_length_ok: total_length <= floor_length + 1.0, self_intersecting };
+    Ok(Built { pattern, checks })
+}
+
+/// Why [`build_valid_in`] turned a design down.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Refusal {
+    /// The design cannot be built.
+    Build(BuildError),
+    /// The garment is longer than the floor allows (`total_length > floor_length + 1`).
+    TooLong {
+        /// Sum of the parts' lengths, cm.
+        total_length: f64,
+        /// Height minus head length, cm.
+        floor_length: f64,
+    },
+    /// A panel outline crosses itself.
+    SelfIntersecting,
+}
+
+/// As [`build_in`] for a design that must pass the geometric checks (length, then
+/// self-intersection): stops at the first that fails, without the work the rest
+/// would take (the dataset sampler turns down about half of what it draws).
+/// The parameter-combination filter is the caller's: it needs no building.
+pub fn build_valid_in(arena: &mut Arena, design: &Design, body: &Body, name: &str) -> Result<Built, Refusal> {
+    let garment = new_garment(arena, design, body).map_err(Refusal::Build)?;
+    let (total_length, floor_length) = lengths(arena, &garment, body);
+    if total_length > floor_length + 1.0 {
+        return Err(Refusal::TooLong { total_length, floor_length });
+    }
+    if garment.is_self_intersecting(arena) {
+        return Err(Refusal::SelfIntersecting);
+    }
+    let pattern = garment.assemble(arena, name).map_err(|e| Refusal::Build(e.into()))?;
+    let param_combinations = check_param_combinations(design);
+    let checks = Checks { param_combinations, total_length, floor_length, total_length_ok: true, self_intersecting: false };
+    Ok(Built { pattern, checks })
+}
+
+/// The garment program run on a cleared arena; an empty garment is an error.
+fn new_garment(arena: &mut Arena, design: &Design, body: &Body) -> Result<MetaGarment, BuildError> {
+    arena.clear();
     let garment = MetaGarment::new(arena, body, design)?;
     if garment.panel_ids().is_empty() {
         return Err(BuildError::Empty);
     }
-    let total_length = Component::length(&garment, arena);
-    let floor_length = body.height - body.head_l;
-    let self_intersecting = garment.is_self_intersecting(arena);
-    let pattern = garment.assemble(arena, name)?;
-    let checks = Checks { param_combinations, total_length, floor_length, total_length_ok: total_length <= floor_length + 1.0, self_intersecting };
-    Ok(Built { pattern, checks })
+    Ok(garment)
+}
+
+/// The garment's total length and the floor length it must not exceed (by more
+/// than 1 cm).
+fn lengths(arena: &Arena, garment: &MetaGarment, body: &Body) -> (f64, f64) {
+    (Component::length(garment, arena), body.height - body.head_l)
 }
 
 /// Build `design` on `body` into the pattern named `name`.

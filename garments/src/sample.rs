@@ -16,7 +16,7 @@
 //! (drawn from the given bodies) and is checked on it.
 
 use crate::Design;
-use crate::build::{Built, build_in};
+use crate::build::{Built, Refusal, build_valid_in};
 use crate::design::{BottomKind, GodetBase, UpperKind};
 use crate::meta::check_param_combinations;
 use garmentcode::params::{DesignError, Sampler, sample_rng};
@@ -241,16 +241,13 @@ impl DatasetSampler {
         if let Err(m) = check_param_combinations(design) {
             return Err((Reason::of_combination(m), m.to_string()));
         }
-        let built = build_in(arena, design, &self.bodies[body].body, name).map_err(|e| (Reason::BuildError, e.to_string()))?;
-        let c = &built.checks;
-        if !c.total_length_ok {
-            let m = format!("total length {} exceeds the floor length {}", c.total_length, c.floor_length);
-            return Err((Reason::TooLong, m));
-        }
-        if c.self_intersecting {
-            return Err((Reason::SelfIntersecting, "a panel outline crosses itself".into()));
-        }
-        Ok(built)
+        build_valid_in(arena, design, &self.bodies[body].body, name).map_err(|r| match r {
+            Refusal::Build(e) => (Reason::BuildError, e.to_string()),
+            Refusal::TooLong { total_length, floor_length } => {
+                (Reason::TooLong, format!("total length {total_length} exceeds the floor length {floor_length}"))
+            }
+            Refusal::SelfIntersecting => (Reason::SelfIntersecting, "a panel outline crosses itself".into()),
+        })
     }
 
     /// The next attempt on a sample's generator: the design, then the body.

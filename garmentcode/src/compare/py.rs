@@ -361,34 +361,10 @@ pub fn repr_str(s: &str) -> String {
 
 /// `repr(float)`: shortest round-trip digits, positional for 1e-4 <= |x| < 1e16.
 pub fn float_repr(x: f64) -> String {
-    if x.is_nan() {
-        return "nan".into();
+    if x == 0.0 && x.is_sign_negative() {
+        return "-0.0".into();
     }
-    if x.is_infinite() {
-        return if x > 0.0 { "inf".into() } else { "-inf".into() };
-    }
-    let sci = format!("{:e}", x); // shortest digits, e.g. "-1.5e-7"
-    let (mant, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
-    let exp: i32 = exp.parse().unwrap_or(0);
-    let neg = mant.starts_with('-');
-    let digits: String = mant.chars().filter(|c| c.is_ascii_digit()).collect();
-    let sign = if neg { "-" } else { "" };
-    if x == 0.0 {
-        return format!("{sign}0.0");
-    }
-    if (-4..16).contains(&exp) {
-        let point = exp + 1; // digits before the decimal point
-        if point <= 0 {
-            format!("{sign}0.{}{}", "0".repeat((-point) as usize), digits)
-        } else if point as usize >= digits.len() {
-            format!("{sign}{}{}.0", digits, "0".repeat(point as usize - digits.len()))
-        } else {
-            format!("{sign}{}.{}", &digits[..point as usize], &digits[point as usize..])
-        }
-    } else {
-        let m = if digits.len() > 1 { format!("{}.{}", &digits[..1], &digits[1..]) } else { digits.clone() };
-        format!("{sign}{m}e{}{:02}", if exp < 0 { '-' } else { '+' }, exp.abs())
-    }
+    crate::pattern::python_float_repr(x)
 }
 
 /// `f'{x:.Nf}'`. Rust's fixed formatting rounds the exact binary value half-to-even like

@@ -25,12 +25,17 @@ pub fn sample_rng(seed: u64, index: u64) -> ChaCha8Rng {
 #[derive(Clone, Debug)]
 pub struct Sampler {
     space: DesignSpace,
+    /// Per parameter, in document order, the options a fresh draw picks from (the
+    /// categorical options, with none for categorical-or-none, without the default
+    /// when a probability is given); empty for numbers.
+    choices: Vec<Vec<Value>>,
 }
 
 impl Sampler {
     /// A sampler over `space` (which should have no [`DesignSpace::problems`]).
     pub fn new(space: DesignSpace) -> Sampler {
-        Sampler { space }
+        let choices = space.params().iter().map(fresh_choices).collect();
+        Sampler { space, choices }
     }
 
     /// The design space.
@@ -40,17 +45,49 @@ impl Sampler {
 
     /// One random design as `(path, value)` pairs in document order.
     pub fn sample_values(&self, rng: &mut impl RngCore) -> Vec<(String, Value)> {
-        self.space.params().iter().map(|p| (p.path.clone(), sample_one(p, rng))).collect()
+        self.space.params().iter().zip(&self.choices).map(|(p, c)| (p.path.clone(), draw(p, c, rng))).collect()
     }
 
     /// One random design as a typed parameter tree.
+    ///
+    /// The same draws as [`Sampler::sample_values`], set straight into the tree.
     pub fn sample<D: Params>(&self, rng: &mut impl RngCore) -> D {
-        let values = self.sample_values(rng);
-        super::io::from_values(&values, "<sampled>").expect("sampled values fit their own space")
+        let mut d = D::defaults();
+        let mut keys: Vec<&str> = Vec::with_capacity(8);
+        for (i, (p, c)) in self.space.params().iter().zip(&self.choices).enumerate() {
+            let v = draw(p, c, rng);
+            keys.clear();
+            keys.extend(self.space.keys(i).iter().map(String::as_str));
+            if let Err(e) = d.set_value(&keys, &v) {
+                panic!("sampled value {v:?} does not fit design.{}: {e}", p.path);
+            }
+        }
+        d
     }
 }
 
+/// The options a fresh draw of `p` picks from (see [`Sampler::choices`]).
+fn fresh_choices(p: &super::ParamSpec) -> Vec<Value> {
+    let Range::Options(opts) = &p.range else { return Vec::new() };
+    let mut opts = opts.clone();
+    if p.kind == Kind::SelectNull && !opts.contains(&Value::Null) {
+        opts.push(Value::Null);
+    }
+    if p.default_prob.is_some()
+        && let Some(i) = opts.iter().position(|o| o.loosely_eq(&p.default))
+    {
+        opts.remove(i);
+    }
+    opts
+}
+
+#[cfg(test)]
 fn sample_one(p: &super::ParamSpec, rng: &mut impl RngCore) -> Value {
+    draw(p, &fresh_choices(p), rng)
+}
+
+/// One draw of `p`; `choices` are its [`fresh_choices`].
+fn draw(p: &super::ParamSpec, choices: &[Value], rng: &mut impl RngCore) -> Value {
     let keep = p.default_prob.is_some_and(|prob| unit(rng) < prob);
     if keep {
         return p.default.clone();
@@ -75,18 +112,11 @@ fn sample_one(p: &super::ParamSpec, rng: &mut impl RngCore) -> Value {
                 }
             }
         }
-        (_, Range::Options(opts)) => {
-            let mut opts = opts.clone();
-            if p.kind == Kind::SelectNull && !opts.contains(&Value::Null) {
-                opts.push(Value::Null);
-            }
-            if exclude && let Some(i) = opts.iter().position(|o| o.loosely_eq(&p.default)) {
-                opts.remove(i);
-            }
-            if opts.is_empty() {
+        (_, Range::Options(_)) => {
+            if choices.is_empty() {
                 return p.default.clone();
             }
-            opts[below(rng, opts.len() as u64) as usize].clone()
+            choices[below(rng, choices.len() as u64) as usize].clone()
         }
         _ => p.default.clone(),
     }

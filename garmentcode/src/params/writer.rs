@@ -104,8 +104,11 @@ impl DesignWriter {
             match &v {
                 Value::Null => out.push_str("null"),
                 Value::Bool(b) => out.push_str(if *b { "true" } else { "false" }),
-                Value::Int(x) => out.push_str(&x.to_string()),
-                Value::Float(x) => out.push_str(&yaml::float_repr(*x)),
+                Value::Int(x) => {
+                    use std::fmt::Write as _;
+                    let _ = write!(out, "{x}");
+                }
+                Value::Float(x) => yaml::push_float_repr(&mut out, *x),
                 Value::Str(s) => match self.options[i].get(s) {
                     Some(t) => out.push_str(t),
                     None => return super::write_design(design, &self.space),

@@ -11,6 +11,7 @@ mod order;
 mod validate;
 
 pub use json::python_float_repr;
+pub(crate) use json::write_python_float;
 pub use order::panel_order;
 pub use validate::{Problem, ProblemKind, Severity, validate};
 

@@ -546,59 +546,35 @@ fn scalar_text(v: &Value) -> String {
     }
 }
 
-/// PyYAML `represent_float`: Python `repr` (shortest round-trip digits,
-/// exponent form below 1e-4 and from 1e16 on), lower-case, with `.0` added
-/// before a bare exponent so that YAML 1.1 reads it as a float.
+/// A float as PyYAML writes it: Python's `repr`, with `.0` added to a mantissa
+/// without a point (`1e+16` → `1.0e+16`), and `.nan`, `.inf`, `-.inf`.
 pub(crate) fn float_repr(f: f64) -> String {
+    let mut out = String::with_capacity(24);
+    push_float_repr(&mut out, f);
+    out
+}
+
+/// [`float_repr`] appended to `out`, without allocating.
+pub(crate) fn push_float_repr(out: &mut String, f: f64) {
     if f.is_nan() {
-        return ".nan".to_string();
+        out.push_str(".nan");
+        return;
     }
     if f.is_infinite() {
-        return if f > 0.0 { ".inf".to_string() } else { "-.inf".to_string() };
+        out.push_str(if f > 0.0 { ".inf" } else { "-.inf" });
+        return;
     }
-    // Rust's `{:e}` gives the shortest round-trip digits, like Python's repr.
-    let sci = format!("{:e}", f);
-    let (mant, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
-    let exp: i32 = exp.parse().unwrap_or(0);
-    let neg = mant.starts_with('-');
-    let digits: String = mant.chars().filter(|c| c.is_ascii_digit()).collect();
-    let decpt = exp + 1;
-    let mut out = String::new();
-    if neg {
-        out.push('-');
+    if f == 0.0 {
+        out.push_str(if f.is_sign_negative() { "-0.0" } else { "0.0" });
+        return;
     }
-    if -4 < decpt && decpt <= 16 {
-        if decpt <= 0 {
-            out.push_str("0.");
-            for _ in 0..(-decpt) {
-                out.push('0');
-            }
-            out.push_str(&digits);
-        } else if decpt as usize >= digits.len() {
-            out.push_str(&digits);
-            for _ in digits.len()..decpt as usize {
-                out.push('0');
-            }
-            out.push_str(".0");
-        } else {
-            out.push_str(&digits[..decpt as usize]);
-            out.push('.');
-            out.push_str(&digits[decpt as usize..]);
-        }
-    } else {
-        out.push_str(&digits[..1]);
-        // Python writes `1e+16`; PyYAML turns that into `1.0e+16`.
-        out.push('.');
-        if digits.len() > 1 {
-            out.push_str(&digits[1..]);
-        } else {
-            out.push('0');
-        }
-        out.push('e');
-        out.push(if exp < 0 { '-' } else { '+' });
-        out.push_str(&format!("{:02}", exp.abs()));
+    let start = out.len();
+    crate::pattern::write_python_float(out, f);
+    if let Some(e) = out[start..].find('e')
+        && !out[start..start + e].contains('.')
+    {
+        out.insert_str(start + e, ".0");
     }
-    out
 }
 
 /// PyYAML `analyze_scalar` (with `allow_unicode=False`).

@@ -41,7 +41,7 @@ use std::fmt;
 
 pub use emitter::to_string;
 pub(crate) use resolve::{Resolved, resolve_plain, resolves_to_value};
-pub(crate) use emitter::float_repr;
+pub(crate) use emitter::push_float_repr;
 
 /// A YAML value as PyYAML `safe_load` would build it (restricted to the types
 /// the supported subset can produce).

@@ -266,17 +266,26 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
             });
         }
         drop(tx);
-        loop {
-            match rx.recv_timeout(Duration::from_millis(100)) {
-                Ok(Ok(record)) => {
-                    made.push(record);
-                    progress.inc();
+        // Records are collected in batches: waking this thread for every sample
+        // (thousands a second) would take the cores from the workers.
+        let mut done = false;
+        while !done {
+            std::thread::sleep(Duration::from_millis(20));
+            loop {
+                match rx.try_recv() {
+                    Ok(Ok(record)) => {
+                        made.push(record);
+                        progress.inc();
+                    }
+                    Ok(Err(e)) => {
+                        error.get_or_insert(e);
+                    }
+                    Err(mpsc::TryRecvError::Empty) => break,
+                    Err(mpsc::TryRecvError::Disconnected) => {
+                        done = true;
+                        break;
+                    }
                 }
-                Ok(Err(e)) => {
-                    error.get_or_insert(e);
-                }
-                Err(mpsc::RecvTimeoutError::Timeout) => {}
-                Err(mpsc::RecvTimeoutError::Disconnected) => break,
             }
             progress.tick();
         }

@@ -44,8 +44,16 @@ pub type V2 = [f64; 2];
 /// Ripple-free solution refined by [`proximal::STEPS`] proximal steps on the reference's
 /// objective: deterministic, continuous in all inputs, at least as good as the reference on
 /// its own objective on every logged call.
+///
+/// Results are memoised per thread until the arena is cleared (a pure function of
+/// its inputs' bits: the memo changes nothing but the time taken).
 pub fn match_tangents(cps: [V2; 4], t0: V2, t1: V2, target_len: f64) -> [V2; 4] {
-    match_tangents_with_stats(cps, t0, t1, target_len, Mode::Proximal).0
+    let mut key = [0u64; 13];
+    let inputs = cps.iter().flatten().chain(&t0).chain(&t1).chain(std::iter::once(&target_len));
+    for (k, x) in key.iter_mut().zip(inputs) {
+        *k = x.to_bits();
+    }
+    crate::memo::curve_fit((b'I', key), || match_tangents_with_stats(cps, t0, t1, target_len, Mode::Proximal).0)
 }
 
 /// Like [`match_tangents`] but minimises the reference objective to convergence (a local
