@@ -6,7 +6,8 @@
 //! - `cli`: the whole `garmentcode sample` command (threads, files, summary) into a
 //!   fresh folder, with `--jobs` 1 and 2.
 //!
-//! `cargo bench --bench sample`
+//! `cargo bench --bench sample`; the command writes under `$GARMENTCODE_BENCH_DIR`
+//! (default: the temporary directory), so the disk can be chosen.
 
 use garments::sample::{DatasetSampler, Outcome};
 use std::path::PathBuf;
@@ -15,12 +16,17 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 const SEED: u64 = 1;
 
+/// The allocator of the `garmentcode` binary, so that the library figure is
+/// what the command's threads do.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() {
     divan::main();
 }
 
 /// Samples per iteration of the library benchmark.
-const LIB_SAMPLES: u64 = 200;
+const LIB_SAMPLES: u64 = 1000;
 
 #[divan::bench(sample_count = 5, sample_size = 1)]
 fn library_one_thread(bencher: divan::Bencher) {
@@ -38,12 +44,13 @@ fn library_one_thread(bencher: divan::Bencher) {
 }
 
 /// Samples per run of the command benchmark.
-const CLI_SAMPLES: u64 = 1000;
+const CLI_SAMPLES: u64 = 5000;
 
 #[divan::bench(args = [1, 2], sample_count = 3, sample_size = 1)]
 fn cli(bencher: divan::Bencher, jobs: usize) {
     static RUN: AtomicUsize = AtomicUsize::new(0);
-    let root = std::env::temp_dir().join(format!("garmentcode-bench-{}", std::process::id()));
+    let base = std::env::var_os("GARMENTCODE_BENCH_DIR").map_or_else(std::env::temp_dir, PathBuf::from);
+    let root = base.join(format!("garmentcode-bench-{}", std::process::id()));
     bencher
         .counter(divan::counter::ItemsCount::new(CLI_SAMPLES))
         .with_inputs(|| -> PathBuf {

@@ -25,7 +25,7 @@ use garments::Design;
 use garments::sample::{DatasetSampler, MAX_ATTEMPTS, NamedBody, Outcome, sample_name};
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 use store::{Formats, Record, Settings};
@@ -240,11 +240,26 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
     let mut made: Vec<Record> = Vec::new();
     let mut error: Option<String> = None;
     let mut progress = progress::Progress::new(todo);
+    let collector = std::thread::current();
+    let running = AtomicUsize::new(jobs);
     std::thread::scope(|scope| {
         for _ in 0..jobs {
             let tx = tx.clone();
             let (next, stop, settings, finished, out) = (&next, &stop, &settings, &finished, &opts.out);
+            let (collector, running) = (&collector, &running);
             scope.spawn(move || {
+                // The last worker to finish wakes the collector at once.
+                struct Done<'a>(&'a AtomicUsize, &'a std::thread::Thread);
+                impl Drop for Done<'_> {
+                    fn drop(&mut self) {
+                        if self.0.fetch_sub(1, Ordering::AcqRel) == 1 {
+                            self.1.unpark();
+                        }
+                    }
+                }
+                let _done = Done(running, collector);
+                // Declared after `_done`, so dropped (closing the channel) before it.
+                let tx = tx;
                 let mut arena = Arena::new();
                 while !stop.load(Ordering::Relaxed) {
                     let slot = next.fetch_add(1, Ordering::Relaxed);
@@ -270,7 +285,7 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
         // (thousands a second) would take the cores from the workers.
         let mut done = false;
         while !done {
-            std::thread::sleep(Duration::from_millis(20));
+            std::thread::park_timeout(Duration::from_millis(20));
             loop {
                 match rx.try_recv() {
                     Ok(Ok(record)) => {
