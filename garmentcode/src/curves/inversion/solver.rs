@@ -249,6 +249,12 @@ pub(crate) struct Setup {
     grid: [Sample; NS],
     /// dB'''/dx_i.
     pub(crate) e3: [V2; NX],
+    /// The length quadrature's tables.
+    quad: &'static Quadrature,
+}
+
+/// Tables of the fixed-rule length quadrature: the same for every call.
+pub(crate) struct Quadrature {
     /// Bernstein weights of B' at the quadrature nodes, and dB'/dx_i there.
     gw1: [[f64; 4]; 64],
     /// dB'/dx_i at node q is c_i(q) * v_i with v_i in {ex, ey, ex, ey, dir}:
@@ -256,6 +262,28 @@ pub(crate) struct Setup {
     gc: [[f64; NX]; 64],
     gcc: [[f64; 15]; 64],
 }
+
+static QUADRATURE: std::sync::LazyLock<Quadrature> = std::sync::LazyLock::new(|| {
+    let gw1: [[f64; 4]; 64] = std::array::from_fn(|q| w1(GL64_T[q]));
+    let gc: [[f64; NX]; 64] = std::array::from_fn(|q| {
+        let w = &gw1[q];
+        [w[1], w[1], w[2], w[2], w[3]].map(|c| GL64_W[q] * c)
+    });
+    let gcc = std::array::from_fn(|q| {
+        let w = &gw1[q];
+        let c = [w[1], w[1], w[2], w[2], w[3]];
+        let mut out = [0.0; 15];
+        let mut n = 0;
+        for i in 0..NX {
+            for j in i..NX {
+                out[n] = GL64_W[q] * c[i] * c[j];
+                n += 1;
+            }
+        }
+        out
+    });
+    Quadrature { gw1, gc, gcc }
+});
 
 /// The curvature constraints at one iterate: 70 samples, then refined peaks.
 #[derive(Clone, Copy)]
@@ -274,25 +302,7 @@ impl Setup {
         let dir = chord_dir(&cps);
         let step = 1.0 / (NS - 1) as f64;
         let grid = std::array::from_fn(|k| Sample::new(if k == NS - 1 { 1.0 } else { k as f64 * step }, dir));
-        let gw1: [[f64; 4]; 64] = std::array::from_fn(|q| w1(GL64_T[q]));
-        let gc: [[f64; NX]; 64] = std::array::from_fn(|q| {
-            let w = &gw1[q];
-            [w[1], w[1], w[2], w[2], w[3]].map(|c| GL64_W[q] * c)
-        });
-        let gcc = std::array::from_fn(|q| {
-            let w = &gw1[q];
-            let c = [w[1], w[1], w[2], w[2], w[3]];
-            let mut out = [0.0; 15];
-            let mut n = 0;
-            for i in 0..NX {
-                for j in i..NX {
-                    out[n] = GL64_W[q] * c[i] * c[j];
-                    n += 1;
-                }
-            }
-            out
-        });
-        Setup { p: cps, dir, t0: unit(t0), t1: unit(t1), target, grid, e3: dirs(&W3, dir), gw1, gc, gcc }
+        Setup { p: cps, dir, t0: unit(t0), t1: unit(t1), target, grid, e3: dirs(&W3, dir), quad: &QUADRATURE }
     }
 
     /// Control points for shift x.
@@ -325,7 +335,7 @@ impl Setup {
     fn smooth_value(&self, x: &[f64; NX], p: &[V2; 4]) -> f64 {
         let mut len = 0.0;
         for q in 0..64 {
-            let b1 = comb(&self.gw1[q], p);
+            let b1 = comb(&self.quad.gw1[q], p);
             len += GL64_W[q] * dot(b1, b1).sqrt();
         }
         let a = [p[1][0] - p[0][0], p[1][1] - p[0][1]];
@@ -345,13 +355,13 @@ impl Setup {
         let mut gl = [0.0; NX];
         let mut hl = [0.0; 15];
         for q in 0..64 {
-            let b1 = comb(&self.gw1[q], p);
+            let b1 = comb(&self.quad.gw1[q], p);
             let s = dot(b1, b1).sqrt();
             len += GL64_W[q] * s;
             let (ux, uy) = (b1[0] / s, b1[1] / s);
             let ud = ux * d[0] + uy * d[1];
             let uv = [ux, uy, ux, uy, ud];
-            let c = &self.gc[q];
+            let c = &self.quad.gc[q];
             for i in 0..NX {
                 gl[i] += c[i] * uv[i];
             }
@@ -366,7 +376,7 @@ impl Setup {
                 myy, myd, // i = 3 (ey) with j = 3..4
                 mdd, // i = 4 (dir) with j = 4
             ];
-            let cc = &self.gcc[q];
+            let cc = &self.quad.gcc[q];
             for n in 0..15 {
                 hl[n] += cc[n] * m[n];
             }
@@ -430,12 +440,12 @@ impl Setup {
         let mut len = 0.0;
         let mut gl = [0.0; NX];
         for q in 0..64 {
-            let b1 = comb(&self.gw1[q], p);
+            let b1 = comb(&self.quad.gw1[q], p);
             let s = dot(b1, b1).sqrt();
             len += GL64_W[q] * s;
             let (ux, uy) = (b1[0] / s, b1[1] / s);
             let uv = [ux, uy, ux, uy, ux * d[0] + uy * d[1]];
-            let c = &self.gc[q];
+            let c = &self.quad.gc[q];
             for i in 0..NX {
                 gl[i] += c[i] * uv[i];
             }
