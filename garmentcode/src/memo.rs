@@ -8,7 +8,7 @@
 use crate::math::Vec2;
 use std::cell::RefCell;
 use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
+use std::hash::{BuildHasherDefault, Hash, Hasher};
 
 /// Multiply-rotate hashing of integer keys (few, not adversarial; SipHash cost
 /// more than the lookups saved).
@@ -40,66 +40,53 @@ impl Hasher for WordHasher {
     }
 }
 
-type Table<K> = RefCell<HashMap<K, Vec<Vec2>, BuildHasherDefault<WordHasher>>>;
-
-/// Key of one edge linearisation: shape or geometry bits, kind, number of points.
-pub(crate) type EdgeKey = ([u64; 6], u8, usize);
-
-thread_local! {
-    static EDGE_POINTS: Table<EdgeKey> = RefCell::default();
-}
+type Table<K, V> = RefCell<HashMap<K, V, BuildHasherDefault<WordHasher>>>;
 
 /// Entries kept at most: a garment needs a few dozen; a program that builds
 /// garments without ever clearing its arenas must not grow the table forever.
 const CAPACITY: usize = 4096;
 
-/// Calls `f` with the memoised linearisation points for `key`, computing them
-/// with `make` once (outside any borrow of the table).
-pub(crate) fn edge_points<R>(key: EdgeKey, make: impl FnOnce() -> Vec<Vec2>, f: impl FnOnce(&[Vec2]) -> R) -> R {
-    EDGE_POINTS.with(|cache| {
-        if let Some(pts) = cache.borrow().get(&key) {
-            return f(pts);
-        }
-        let pts = make();
-        let mut cache = cache.borrow_mut();
-        if cache.len() >= CAPACITY {
-            cache.clear();
-        }
-        f(cache.entry(key).or_insert(pts))
-    })
+/// Calls `read` with the value for `key`, computed with `make` the first time
+/// (outside any borrow of the table).
+fn lookup<K: Eq + Hash, V, R>(table: &Table<K, V>, key: K, make: impl FnOnce() -> V, read: impl FnOnce(&V) -> R) -> R {
+    if let Some(v) = table.borrow().get(&key) {
+        return read(v);
+    }
+    let v = make();
+    let mut table = table.borrow_mut();
+    if table.len() >= CAPACITY {
+        table.clear();
+    }
+    read(table.entry(key).or_insert(v))
 }
 
-/// Key of one curve fit: which fit (`b'I'` the cubic inversion) and the bits of
-/// every input it reads.
-pub(crate) type FitKey = (u8, [u64; 13]);
+/// Key of one edge linearisation: shape or geometry bits, kind, number of points.
+pub(crate) type EdgeKey = ([u64; 6], u8, usize);
 
-/// A fit's result: up to four points.
-pub(crate) type FitResult = [[f64; 2]; 4];
+/// Key of one curve inversion: the bits of its control points, end tangents and
+/// target length.
+pub(crate) type InversionKey = [u64; 13];
 
 thread_local! {
-    static FITS: RefCell<HashMap<FitKey, FitResult, BuildHasherDefault<WordHasher>>> = RefCell::default();
+    static EDGE_POINTS: Table<EdgeKey, Vec<Vec2>> = RefCell::default();
+    static INVERSIONS: Table<InversionKey, [[f64; 2]; 4]> = RefCell::default();
 }
 
-/// The memoised result of the curve fit `key`, computed with `make` once. The
+/// Calls `f` with the memoised linearisation points for `key`, computing them
+/// with `make` once.
+pub(crate) fn edge_points<R>(key: EdgeKey, make: impl FnOnce() -> Vec<Vec2>, f: impl FnOnce(&[Vec2]) -> R) -> R {
+    EDGE_POINTS.with(|table| lookup(table, key, make, |pts| f(pts)))
+}
+
+/// The memoised result of the inversion `key`, computed with `make` once. The
 /// two sleeves of a symmetric garment (and a sleeve's front and back where their
 /// armholes agree) invert the very same curve.
-pub(crate) fn curve_fit(key: FitKey, make: impl FnOnce() -> FitResult) -> FitResult {
-    if let Some(r) = FITS.with(|c| c.borrow().get(&key).copied()) {
-        return r;
-    }
-    let r = make();
-    FITS.with(|c| {
-        let mut c = c.borrow_mut();
-        if c.len() >= CAPACITY {
-            c.clear();
-        }
-        c.insert(key, r);
-    });
-    r
+pub(crate) fn inversion(key: InversionKey, make: impl FnOnce() -> [[f64; 2]; 4]) -> [[f64; 2]; 4] {
+    INVERSIONS.with(|table| lookup(table, key, make, |r| *r))
 }
 
 /// Forget every entry (a new garment starts).
 pub(crate) fn clear() {
     EDGE_POINTS.with(|c| c.borrow_mut().clear());
-    FITS.with(|c| c.borrow_mut().clear());
+    INVERSIONS.with(|c| c.borrow_mut().clear());
 }

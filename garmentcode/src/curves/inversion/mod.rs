@@ -53,7 +53,7 @@ pub fn match_tangents(cps: [V2; 4], t0: V2, t1: V2, target_len: f64) -> [V2; 4] 
     for (k, x) in key.iter_mut().zip(inputs) {
         *k = x.to_bits();
     }
-    crate::memo::curve_fit((b'I', key), || match_tangents_with_stats(cps, t0, t1, target_len, Mode::Proximal).0)
+    crate::memo::inversion(key, || match_tangents_with_stats(cps, t0, t1, target_len, Mode::Proximal).0)
 }
 
 /// Like [`match_tangents`] but minimises the reference objective to convergence (a local
