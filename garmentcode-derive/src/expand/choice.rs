@@ -12,12 +12,13 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         Ok(m) => m,
         Err(e) => {
             let err = e.to_compile_error();
+            let never = super::placeholder_body();
             return quote! {
                 #err
                 impl #p::Choice for #ident {
                     const NAMES: &'static [&'static str] = &[];
-                    fn name(&self) -> &'static str { unimplemented!() }
-                    fn from_name(_: &str) -> ::std::option::Option<Self> { unimplemented!() }
+                    fn name(&self) -> &'static str { #never }
+                    fn from_name(_: &str) -> ::std::option::Option<Self> { #never }
                 }
             };
         }

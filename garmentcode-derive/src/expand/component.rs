@@ -13,10 +13,11 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         Ok(m) => m,
         Err(e) => {
             let err = e.to_compile_error();
+            let never = super::placeholder_body();
             return quote! {
                 #err
                 impl #impl_g #p::Part for #ident #ty_g #where_g {
-                    fn node(&self) -> #p::Node<'_> { unimplemented!() }
+                    fn node(&self) -> #p::Node<'_> { #never }
                 }
             };
         }

@@ -15,13 +15,14 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         Err(e) => {
             // The error plus a stub impl, so uses of the type do not cascade.
             let err = e.to_compile_error();
+            let never = super::placeholder_body();
             return quote! {
                 #err
                 impl #impl_g ::garmentcode::__private::Params for #ident #ty_g #where_g {
-                    fn describe(_: &str, _: &mut ::std::vec::Vec<::garmentcode::__private::ParamSpec>) { unimplemented!() }
-                    fn defaults() -> Self { unimplemented!() }
-                    fn get_value(&self, _: &[&str]) -> ::std::option::Option<::garmentcode::__private::Value> { unimplemented!() }
-                    fn set_value(&mut self, _: &[&str], _: &::garmentcode::__private::Value) -> ::std::result::Result<(), ::std::string::String> { unimplemented!() }
+                    fn describe(_: &str, _: &mut ::std::vec::Vec<::garmentcode::__private::ParamSpec>) { #never }
+                    fn defaults() -> Self { #never }
+                    fn get_value(&self, _: &[&str]) -> ::std::option::Option<::garmentcode::__private::Value> { #never }
+                    fn set_value(&mut self, _: &[&str], _: &::garmentcode::__private::Value) -> ::std::result::Result<(), ::std::string::String> { #never }
                 }
             };
         }
