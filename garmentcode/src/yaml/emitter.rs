@@ -352,19 +352,7 @@ impl Emitter {
                 }
             } else if breaks {
                 if !matches!(ch, Some('\n' | '\u{85}' | '\u{2028}' | '\u{2029}')) {
-                    if text[start] == '\n' {
-                        self.write_line_break();
-                    }
-                    for &br in &text[start..end] {
-                        if br == '\n' {
-                            self.write_line_break();
-                        } else {
-                            self.out.push(br);
-                            self.whitespace = true;
-                            self.indention = true;
-                            self.column = 0;
-                        }
-                    }
+                    self.write_breaks(&text[start..end]);
                     self.write_indent();
                     self.whitespace = false;
                     self.indention = false;
@@ -379,6 +367,24 @@ impl Emitter {
                 breaks = matches!(c, '\n' | '\u{85}' | '\u{2028}' | '\u{2029}');
             }
             end += 1;
+        }
+    }
+
+    /// A run of line breaks inside a scalar, as PyYAML writes it: a leading `\n`
+    /// is doubled (folding would eat one), other breaks are copied.
+    fn write_breaks(&mut self, breaks: &[char]) {
+        if breaks[0] == '\n' {
+            self.write_line_break();
+        }
+        for &br in breaks {
+            if br == '\n' {
+                self.write_line_break();
+            } else {
+                self.out.push(br);
+                self.whitespace = true;
+                self.indention = true;
+                self.column = 0;
+            }
         }
     }
 
@@ -400,19 +406,7 @@ impl Emitter {
                 }
             } else if breaks {
                 if !matches!(ch, Some('\n' | '\u{85}' | '\u{2028}' | '\u{2029}')) {
-                    if text[start] == '\n' {
-                        self.write_line_break();
-                    }
-                    for &br in &text[start..end] {
-                        if br == '\n' {
-                            self.write_line_break();
-                        } else {
-                            self.out.push(br);
-                            self.whitespace = true;
-                            self.indention = true;
-                            self.column = 0;
-                        }
-                    }
+                    self.write_breaks(&text[start..end]);
                     self.write_indent();
                     start = end;
                 }

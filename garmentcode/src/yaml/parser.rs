@@ -318,33 +318,13 @@ impl<'a> Parser<'a> {
         let open = self.s.next_token()?.start; // '['
         let mut items = Vec::new();
         let mut first = true;
-        loop {
-            let t = self.s.peek_token()?;
-            if t.kind == Kind::FlowSeqEnd {
-                break;
-            }
-            if !first {
-                if t.kind == Kind::FlowEntry {
-                    self.s.next_token()?;
-                } else {
-                    return Err(self.unexpected_in_flow(open, b']'));
-                }
-            }
-            first = false;
+        while self.next_flow_entry(open, Kind::FlowSeqEnd, b']', &mut first)? {
             let t = self.s.peek_token()?;
             match t.kind {
                 Kind::Key => {
                     // `[a: 1]`: a single-pair mapping as an item.
-                    let key_tok = self.s.next_token()?;
-                    let k = self.s.peek_kind()?;
-                    let key = if matches!(k, Kind::Value | Kind::FlowEntry | Kind::FlowSeqEnd) {
-                        self.empty(key_tok.end)
-                    } else {
-                        self.parse_key(false)?
-                    };
-                    let value = self.flow_value(Kind::FlowSeqEnd)?;
-                    let m = key_tok.start;
-                    items.push(node_at(Value::Map(vec![(key, value)]), m));
+                    let (start, key, value) = self.flow_pair(Kind::FlowSeqEnd)?;
+                    items.push(node_at(Value::Map(vec![(key, value)]), start));
                 }
                 Kind::FlowSeqEnd => break,
                 _ => items.push(self.parse_node(false, false)?),
@@ -352,6 +332,33 @@ impl<'a> Parser<'a> {
         }
         self.s.next_token()?;
         Ok(node_at(Value::Seq(items), open))
+    }
+
+    /// Before an entry of a flow collection opened at `open`: false at its end
+    /// token `end`; else consumes the `,` every entry but the first needs.
+    fn next_flow_entry(&mut self, open: Mark, end: Kind, closer: u8, first: &mut bool) -> Result<bool, YamlError> {
+        let t = self.s.peek_token()?;
+        if t.kind == end {
+            return Ok(false);
+        }
+        if !*first {
+            if t.kind != Kind::FlowEntry {
+                return Err(self.unexpected_in_flow(open, closer));
+            }
+            self.s.next_token()?;
+        }
+        *first = false;
+        Ok(true)
+    }
+
+    /// An explicit `? key : value` pair in a flow collection ending with `end`
+    /// (either side may be empty), with the position of its `?`.
+    fn flow_pair(&mut self, end: Kind) -> Result<(Mark, Node, Node), YamlError> {
+        let key_tok = self.s.next_token()?;
+        let k = self.s.peek_kind()?;
+        let key = if k == Kind::Value || k == Kind::FlowEntry || k == end { self.empty(key_tok.end) } else { self.parse_key(false)? };
+        let value = self.flow_value(end)?;
+        Ok((key_tok.start, key, value))
     }
 
     /// The value after a flow key: `: value`, `:` (null) or nothing (null).
@@ -375,30 +382,11 @@ impl<'a> Parser<'a> {
         let open = self.s.next_token()?.start; // '{'
         let mut pairs: Vec<(Node, Node)> = Vec::new();
         let mut first = true;
-        loop {
-            let t = self.s.peek_token()?;
-            if t.kind == Kind::FlowMapEnd {
-                break;
-            }
-            if !first {
-                if t.kind == Kind::FlowEntry {
-                    self.s.next_token()?;
-                } else {
-                    return Err(self.unexpected_in_flow(open, b'}'));
-                }
-            }
-            first = false;
+        while self.next_flow_entry(open, Kind::FlowMapEnd, b'}', &mut first)? {
             let t = self.s.peek_token()?;
             match t.kind {
                 Kind::Key => {
-                    let key_tok = self.s.next_token()?;
-                    let k = self.s.peek_kind()?;
-                    let key = if matches!(k, Kind::Value | Kind::FlowEntry | Kind::FlowMapEnd) {
-                        self.empty(key_tok.end)
-                    } else {
-                        self.parse_key(false)?
-                    };
-                    let value = self.flow_value(Kind::FlowMapEnd)?;
+                    let (_, key, value) = self.flow_pair(Kind::FlowMapEnd)?;
                     self.push_pair(&mut pairs, key, value)?;
                 }
                 Kind::FlowMapEnd => break,
