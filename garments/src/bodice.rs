@@ -337,6 +337,37 @@ pub struct SleeveParams {
     pub cuff_skirt_ruffle: f64,
 }
 
+/// A half's sleeve from its design parameters: the right (or symmetric) sleeve's
+/// and the asymmetric left sleeve's types differ only in sampling probabilities.
+macro_rules! sleeve_params_from {
+    ($($design:ty),*) => {$(
+        impl From<&$design> for SleeveParams {
+            fn from(s: &$design) -> SleeveParams {
+                SleeveParams {
+                    sleeveless: s.sleeveless,
+                    armhole_shape: s.armhole_shape,
+                    length: s.length,
+                    connecting_width: s.connecting_width,
+                    end_width: s.end_width,
+                    sleeve_angle: s.sleeve_angle as f64,
+                    opening_dir_mix: s.opening_dir_mix,
+                    standing_shoulder: s.standing_shoulder,
+                    standing_shoulder_len: s.standing_shoulder_len,
+                    connect_ruffle: s.connect_ruffle,
+                    smoothing_coeff: s.smoothing_coeff,
+                    cuff_type: s.cuff.r#type,
+                    cuff_top_ruffle: s.cuff.top_ruffle,
+                    cuff_len: s.cuff.cuff_len,
+                    cuff_skirt_fraction: s.cuff.skirt_fraction,
+                    cuff_skirt_flare: s.cuff.skirt_flare,
+                    cuff_skirt_ruffle: s.cuff.skirt_ruffle,
+                }
+            }
+        }
+    )*};
+}
+sleeve_params_from!(crate::design::Sleeve, crate::design::LeftSleeve);
+
 impl HalfDesign {
     /// The right half (and both halves of symmetric tops).
     pub fn right(d: &Design) -> HalfDesign {
@@ -365,25 +396,7 @@ impl HalfDesign {
                 hood_depth: c.component.hood_depth,
                 hood_length: c.component.hood_length,
             },
-            sleeve: SleeveParams {
-                sleeveless: s.sleeveless,
-                armhole_shape: s.armhole_shape,
-                length: s.length,
-                connecting_width: s.connecting_width,
-                end_width: s.end_width,
-                sleeve_angle: s.sleeve_angle as f64,
-                opening_dir_mix: s.opening_dir_mix,
-                standing_shoulder: s.standing_shoulder,
-                standing_shoulder_len: s.standing_shoulder_len,
-                connect_ruffle: s.connect_ruffle,
-                smoothing_coeff: s.smoothing_coeff,
-                cuff_type: s.cuff.r#type,
-                cuff_top_ruffle: s.cuff.top_ruffle,
-                cuff_len: s.cuff.cuff_len,
-                cuff_skirt_fraction: s.cuff.skirt_fraction,
-                cuff_skirt_flare: s.cuff.skirt_flare,
-                cuff_skirt_ruffle: s.cuff.skirt_ruffle,
-            },
+            sleeve: SleeveParams::from(s),
         }
     }
 
@@ -415,25 +428,7 @@ impl HalfDesign {
                 style: None,
                 ..right.collar
             },
-            sleeve: SleeveParams {
-                sleeveless: s.sleeveless,
-                armhole_shape: s.armhole_shape,
-                length: s.length,
-                connecting_width: s.connecting_width,
-                end_width: s.end_width,
-                sleeve_angle: s.sleeve_angle as f64,
-                opening_dir_mix: s.opening_dir_mix,
-                standing_shoulder: s.standing_shoulder,
-                standing_shoulder_len: s.standing_shoulder_len,
-                connect_ruffle: s.connect_ruffle,
-                smoothing_coeff: s.smoothing_coeff,
-                cuff_type: s.cuff.r#type,
-                cuff_top_ruffle: s.cuff.top_ruffle,
-                cuff_len: s.cuff.cuff_len,
-                cuff_skirt_fraction: s.cuff.skirt_fraction,
-                cuff_skirt_flare: s.cuff.skirt_flare,
-                cuff_skirt_ruffle: s.cuff.skirt_ruffle,
-            },
+            sleeve: SleeveParams::from(s),
         }
     }
 }
