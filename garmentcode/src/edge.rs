@@ -275,29 +275,55 @@ impl Edge {
     }
 
     /// Equal-arc-length points of a Bézier edge, from the memoised points of its
-    /// relative shape.
+    /// relative shape in one orientation.
+    ///
+    /// A curve and its reverse have the same points in the opposite order (a
+    /// mirrored panel's loop is reversed to keep its normal outward), so the points
+    /// are always computed along the orientation with the smaller shape key and
+    /// read backwards for the other: one entry serves both, and the result is a
+    /// function of the edge alone, whatever was computed before.
+    fn linearize_bezier(&self, n: usize, out: &mut Vec<Vec2>) {
+        let reversed = self.reversed();
+        if reversed.shape_key(n).0 < self.shape_key(n).0 {
+            let from = out.len();
+            reversed.linearize_oriented(n, out);
+            out[from..].reverse();
+        } else {
+            self.linearize_oriented(n, out);
+        }
+    }
+
+    /// Whether the shape is stored mirrored across the chord, and the memo key of
+    /// the stored shape.
     ///
     /// A shape and its mirror image across the chord (the curves of a mirrored
     /// panel) share one entry, kept for the one whose first control point is not
-    /// below the chord. Mirroring negates every y input; the speeds (hence lengths
-    /// and parameters) use only squares of y differences and come out bit for bit
-    /// the same, and every y value computed from the negated inputs is exactly the
-    /// negated value, except that a zero may differ in sign. So the mirrored points
-    /// are the entry's with y negated, unless one of them is zero: then the points
-    /// are computed directly.
-    fn linearize_bezier(&self, n: usize, out: &mut Vec<Vec2>) {
+    /// below the chord.
+    fn shape_key(&self, n: usize) -> (crate::memo::EdgeKey, bool) {
         let first_y = match self.curve {
             Curve::Quadratic(c) | Curve::Cubic(c, _) => c.y,
             Curve::Line | Curve::Arc { .. } => unreachable!("Bézier edge"),
         };
         let flip = first_y < 0.0;
-        let shape = if flip { Edge { curve: self.curve.reflected(), ..*self } } else { *self };
+        let curve = if flip { self.curve.reflected() } else { self.curve };
         let bits = |v: Vec2| [v.x.to_bits(), v.y.to_bits()];
-        let key = match shape.curve {
+        let key = match curve {
             Curve::Quadratic(c) => ([bits(c)[0], bits(c)[1], 0, 0, 0, 0], b'Q', n),
             Curve::Cubic(c1, c2) => ([bits(c1)[0], bits(c1)[1], bits(c2)[0], bits(c2)[1], 0, 0], b'C', n),
             Curve::Line | Curve::Arc { .. } => unreachable!("Bézier edge"),
         };
+        (key, flip)
+    }
+
+    /// [`Edge::linearize_bezier`] along this orientation. Mirroring negates every
+    /// y input; the speeds (hence lengths and parameters) use only squares of y
+    /// differences and come out bit for bit the same, and every y value computed
+    /// from the negated inputs is exactly the negated value, except that a zero may
+    /// differ in sign. So the mirrored points are the entry's with y negated, unless
+    /// one of them is zero: then the points are computed directly.
+    fn linearize_oriented(&self, n: usize, out: &mut Vec<Vec2>) {
+        let (key, flip) = self.shape_key(n);
+        let shape = if flip { Edge { curve: self.curve.reflected(), ..*self } } else { *self };
         let done = crate::memo::edge_points(key, || shape.relative_linearization(n), |pts| {
             if !flip {
                 out.extend(pts.iter().map(|p| self.to_abs(*p)));
@@ -469,8 +495,20 @@ mod tests {
         assert!((pts[2] - seg.point(t)).length() < 1e-9);
     }
 
-    /// The memoised linearisation (mirror images sharing an entry) gives the bits
-    /// of the direct computation, shapes with zero coordinates included.
+    /// A reversed edge's points are the edge's in the opposite order (to rounding).
+    #[test]
+    fn reversed_edge_has_the_points_backwards() {
+        let e = Edge { start: v(3., 1.), end: v(13., -2.), curve: Curve::Cubic(v(0.1, 0.5), v(0.6, -0.4)) };
+        let forward = e.linearize(9);
+        let backward = e.reversed().linearize(9);
+        for (p, q) in forward.iter().zip(backward.iter().rev()) {
+            assert!((*p - *q).length() < 1e-12, "{p} vs {q}");
+        }
+    }
+
+    /// The memoised linearisation (mirror images and reversed curves sharing an
+    /// entry) gives the bits of the direct computation, shapes with zero
+    /// coordinates included, whatever the memo held before.
     #[test]
     fn memoised_linearization_is_the_direct_one() {
         let mut state = 0x2545_F491_4F6C_DD1Du64;
@@ -480,7 +518,15 @@ mod tests {
             state ^= state << 17;
             ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 1.6
         };
-        let direct = |e: &Edge| -> Vec<Vec2> { e.relative_linearization(9).into_iter().map(|p| e.to_abs(p)).collect() };
+        let oriented = |e: &Edge| -> Vec<Vec2> { e.relative_linearization(9).into_iter().map(|p| e.to_abs(p)).collect() };
+        let direct = |e: &Edge| -> Vec<Vec2> {
+            let r = e.reversed();
+            if r.shape_key(9).0 < e.shape_key(9).0 {
+                oriented(&r).into_iter().rev().collect()
+            } else {
+                oriented(e)
+            }
+        };
         for k in 0..400 {
             let (a, b, c, d) = (next(), next(), next(), next());
             let zero = |x: f64| if k % 7 == 0 { 0.0 } else if k % 11 == 0 { -0.0 } else { x };
@@ -492,11 +538,15 @@ mod tests {
                 Curve::Cubic(v(0.3, 0.0), v(0.7, -0.0)),
             ] {
                 for e in [Edge { start, end, curve }, Edge { start, end, curve: curve.reflected() }] {
-                    crate::memo::clear();
-                    let mirrored = Edge { curve: e.curve.reflected(), ..e };
-                    let _ = mirrored.linearize(9); // fill the shared entry from the mirror image
                     let bits = |p: &[Vec2]| p.iter().map(|q| (q.x.to_bits(), q.y.to_bits())).collect::<Vec<_>>();
-                    assert_eq!(bits(&e.linearize(9)), bits(&direct(&e)), "{e:?}");
+                    let mirrored = Edge { curve: e.curve.reflected(), ..e };
+                    for earlier in [None, Some(mirrored), Some(e.reversed()), Some(mirrored.reversed())] {
+                        crate::memo::clear();
+                        if let Some(other) = earlier {
+                            let _ = other.linearize(9); // fill the shared entry from a relative
+                        }
+                        assert_eq!(bits(&e.linearize(9)), bits(&direct(&e)), "{e:?} after {earlier:?}");
+                    }
                 }
             }
         }
