@@ -67,9 +67,14 @@ pub(crate) type EdgeKey = ([u64; 6], u8, usize);
 /// target length.
 pub(crate) type InversionKey = [u64; 13];
 
+/// Key of one quadratic tangent fit: which end tangents are given, their bits and
+/// the bits of the initial guess.
+pub(crate) type TangentFitKey = [u64; 7];
+
 thread_local! {
     static EDGE_POINTS: Table<EdgeKey, Vec<Vec2>> = RefCell::default();
     static INVERSIONS: Table<InversionKey, [[f64; 2]; 4]> = RefCell::default();
+    static TANGENT_FITS: Table<TangentFitKey, [f64; 2]> = RefCell::default();
 }
 
 /// Calls `f` with the memoised linearisation points for `key`, computing them
@@ -85,8 +90,15 @@ pub(crate) fn inversion(key: InversionKey, make: impl FnOnce() -> [[f64; 2]; 4])
     INVERSIONS.with(|table| lookup(table, key, make, |r| *r))
 }
 
+/// The memoised result of the quadratic tangent fit `key`, computed with `make`
+/// once: the right and left halves of a symmetric garment fit the same curves.
+pub(crate) fn tangent_fit(key: TangentFitKey, make: impl FnOnce() -> [f64; 2]) -> [f64; 2] {
+    TANGENT_FITS.with(|table| lookup(table, key, make, |r| *r))
+}
+
 /// Forget every entry (a new garment starts).
 pub(crate) fn clear() {
     EDGE_POINTS.with(|c| c.borrow_mut().clear());
     INVERSIONS.with(|c| c.borrow_mut().clear());
+    TANGENT_FITS.with(|c| c.borrow_mut().clear());
 }

@@ -12,13 +12,21 @@ use crate::math::{Vec2, abs_to_rel_vector, norm};
 /// the reference finds it (scipy's BFGS on the tangent misfit). With one tangent
 /// every point of a ray fits exactly; the optimiser's path decides which one, so
 /// the path is reproduced faithfully.
+///
+/// Fits are memoised per thread until the arena is cleared, like
+/// [`match_tangents`]: the result is a pure function of the inputs' bits.
 pub fn quadratic_from_tangents(start: Vec2, end: Vec2, tan0: Option<Vec2>, tan1: Option<Vec2>, initial: Vec2) -> Vec2 {
     let rel = |t: Vec2| {
         let r = abs_to_rel_vector(start, end, t);
         let n = norm(r);
         [r.x / n, r.y / n]
     };
-    let cp = bfgs::fit_quadratic_tangents(tan0.map(rel), tan1.map(rel), [initial.x, initial.y]);
+    let (t0, t1) = (tan0.map(rel), tan1.map(rel));
+    let given = u64::from(t0.is_some()) | u64::from(t1.is_some()) << 1;
+    let [t0x, t0y] = t0.unwrap_or_default().map(f64::to_bits);
+    let [t1x, t1y] = t1.unwrap_or_default().map(f64::to_bits);
+    let key = [given, t0x, t0y, t1x, t1y, initial.x.to_bits(), initial.y.to_bits()];
+    let cp = crate::memo::tangent_fit(key, || bfgs::fit_quadratic_tangents(t0, t1, [initial.x, initial.y]));
     Vec2::new(cp[0], cp[1])
 }
 
