@@ -257,6 +257,53 @@ impl Bezier {
         Some(t)
     }
 
+    /// Parameters at the increasing arc lengths `targets` (each within `[0,
+    /// total]`, `total == self.length()`), to the accuracy of
+    /// [`Bezier::inverse_length_given_total`]. Each is solved from the one before,
+    /// integrating only the piece in between: a short piece needs no adaptive
+    /// subdivision, and the step from the previous point is a close first guess.
+    pub fn inverse_lengths_sorted(&self, targets: &[f64], total: f64) -> Vec<f64> {
+        let tol = 1e-13 * total.max(1.0);
+        let (mut t_prev, mut s_prev) = (0.0, 0.0);
+        let mut out = Vec::with_capacity(targets.len());
+        for &s in targets {
+            if s <= s_prev || s >= total {
+                out.push(if s >= total { 1.0 } else { t_prev });
+                continue;
+            }
+            let (mut lo, mut hi) = (t_prev, 1.0);
+            let speed = norm(self.derivative(t_prev));
+            let guess = t_prev + (s - s_prev) / speed;
+            let mut t = if speed > 0.0 && guess > lo && guess < hi { guess } else { 0.5 * (lo + hi) };
+            let mut reached = f64::NAN;
+            for _ in 0..100 {
+                let here = s_prev + self.length_between(t_prev, t);
+                let f = here - s;
+                if f.abs() < tol {
+                    reached = here;
+                    break;
+                }
+                if f < 0.0 {
+                    lo = t;
+                } else {
+                    hi = t;
+                }
+                let speed = norm(self.derivative(t));
+                let newton = t - f / speed;
+                t = if speed > 0.0 && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+                if hi - lo < 1e-16 {
+                    break;
+                }
+            }
+            if reached.is_nan() {
+                reached = s_prev + self.length_between(t_prev, t);
+            }
+            (t_prev, s_prev) = (t, reached);
+            out.push(t);
+        }
+        out
+    }
+
     /// Split at `t` into the parts on `[0, t]` and `[t, 1]` (de Casteljau).
     pub fn split(&self, t: f64) -> (Bezier, Bezier) {
         match *self {
@@ -399,6 +446,28 @@ mod tests {
         assert_eq!(c.inverse_length(0.0), Some(0.0));
         assert_eq!(c.inverse_length(total), Some(1.0));
         assert_eq!(c.inverse_length(total * 1.01), None);
+    }
+
+    /// The sequential solve agrees with one inversion per point, on smooth
+    /// curves, a curve with a cusp and a quadratic.
+    #[test]
+    fn sorted_inverse_lengths_match_single_inversions() {
+        let curves = [
+            Bezier::Cubic([v(0., 0.), v(2., 5.), v(7., -3.), v(9., 1.)]),
+            Bezier::Cubic([v(0., 0.), v(10., 4.), v(0., 4.), v(10., 0.)]),
+            Bezier::Cubic([v(0., 0.), v(0.1, 0.3), v(0.9, 0.3), v(1., 0.)]),
+            Bezier::Quadratic([v(0., 0.), v(4., 7.), v(10., -1.)]),
+        ];
+        for c in curves {
+            let total = c.length();
+            let targets: Vec<f64> = (1..10).map(|k| total * k as f64 / 10.0).collect();
+            let ts = c.inverse_lengths_sorted(&targets, total);
+            for (s, t) in targets.iter().zip(&ts) {
+                assert!((c.length_between(0.0, *t) - s).abs() < 1e-12 * total.max(1.0), "{c:?} at {s}");
+                let single = c.inverse_length(*s).unwrap();
+                assert!((c.point(*t) - c.point(single)).length() < 1e-10, "{c:?}: {t} vs {single}");
+            }
+        }
     }
 
     #[test]

@@ -343,12 +343,8 @@ impl Edge {
     fn relative_linearization(&self, n: usize) -> Vec<Vec2> {
         let rel = self.relative_bezier().expect("Bézier edge");
         let len = rel.length();
-        interior_params(n + 1)
-            .map(|f| {
-                let t = rel.inverse_length_given_total(f * len, len).unwrap_or(f);
-                rel.point(t)
-            })
-            .collect()
+        let targets: Vec<f64> = interior_params(n + 1).map(|f| f * len).collect();
+        rel.inverse_lengths_sorted(&targets, len).into_iter().map(|t| rel.point(t)).collect()
     }
 
     /// Default number of interior linearisation points (0 for lines, 9 for curves).
