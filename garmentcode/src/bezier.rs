@@ -231,30 +231,7 @@ impl Bezier {
         if s == total {
             return Some(1.0);
         }
-        let (mut lo, mut hi) = (0.0, 1.0);
-        let mut t = s / total;
-        for _ in 0..100 {
-            let f = self.length_between(0.0, t) - s;
-            if f.abs() < 1e-13 * total.max(1.0) {
-                return Some(t);
-            }
-            if f < 0.0 {
-                lo = t;
-            } else {
-                hi = t;
-            }
-            let speed = norm(self.derivative(t));
-            let newton = t - f / speed;
-            t = if speed > 0.0 && newton > lo && newton < hi {
-                newton
-            } else {
-                0.5 * (lo + hi)
-            };
-            if hi - lo < 1e-16 {
-                break;
-            }
-        }
-        Some(t)
+        Some(self.solve_length(0.0, 0.0, s, s / total, 1e-13 * total.max(1.0)).0)
     }
 
     /// Parameters at the increasing arc lengths `targets` (each within `[0,
@@ -271,37 +248,43 @@ impl Bezier {
                 out.push(if s >= total { 1.0 } else { t_prev });
                 continue;
             }
-            let (mut lo, mut hi) = (t_prev, 1.0);
             let speed = norm(self.derivative(t_prev));
             let guess = t_prev + (s - s_prev) / speed;
-            let mut t = if speed > 0.0 && guess > lo && guess < hi { guess } else { 0.5 * (lo + hi) };
-            let mut reached = f64::NAN;
-            for _ in 0..100 {
-                let here = s_prev + self.length_between(t_prev, t);
-                let f = here - s;
-                if f.abs() < tol {
-                    reached = here;
-                    break;
-                }
-                if f < 0.0 {
-                    lo = t;
-                } else {
-                    hi = t;
-                }
-                let speed = norm(self.derivative(t));
-                let newton = t - f / speed;
-                t = if speed > 0.0 && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
-                if hi - lo < 1e-16 {
-                    break;
-                }
-            }
-            if reached.is_nan() {
-                reached = s_prev + self.length_between(t_prev, t);
-            }
+            let first = if speed > 0.0 && guess > t_prev && guess < 1.0 { guess } else { 0.5 * (t_prev + 1.0) };
+            let (t, reached) = self.solve_length(t_prev, s_prev, s, first, tol);
+            let reached = reached.unwrap_or_else(|| s_prev + self.length_between(t_prev, t));
             (t_prev, s_prev) = (t, reached);
             out.push(t);
         }
         out
+    }
+
+    /// Bracketed Newton iteration for the parameter where the arc length is `s`,
+    /// from the parameter `t0` (with `s0` the length up to it, so only the piece
+    /// from `t0` is integrated) and the first guess `t`. Returns the parameter and,
+    /// when the tolerance was met, the length reached there (`None` when the
+    /// bracket closed first).
+    fn solve_length(&self, t0: f64, s0: f64, s: f64, mut t: f64, tol: f64) -> (f64, Option<f64>) {
+        let (mut lo, mut hi) = (t0, 1.0);
+        for _ in 0..100 {
+            let here = s0 + self.length_between(t0, t);
+            let f = here - s;
+            if f.abs() < tol {
+                return (t, Some(here));
+            }
+            if f < 0.0 {
+                lo = t;
+            } else {
+                hi = t;
+            }
+            let speed = norm(self.derivative(t));
+            let newton = t - f / speed;
+            t = if speed > 0.0 && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+            if hi - lo < 1e-16 {
+                break;
+            }
+        }
+        (t, None)
     }
 
     /// Split at `t` into the parts on `[0, t]` and `[t, 1]` (de Casteljau).
