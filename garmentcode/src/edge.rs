@@ -284,12 +284,13 @@ impl Edge {
     /// function of the edge alone, whatever was computed before.
     fn linearize_bezier(&self, n: usize, out: &mut Vec<Vec2>) {
         let reversed = self.reversed();
-        if reversed.shape_key(n).0 < self.shape_key(n).0 {
+        let (own, back) = (self.shape_key(n), reversed.shape_key(n));
+        if back.0 < own.0 {
             let from = out.len();
-            reversed.linearize_oriented(n, out);
+            reversed.linearize_oriented(n, back, out);
             out[from..].reverse();
         } else {
-            self.linearize_oriented(n, out);
+            self.linearize_oriented(n, own, out);
         }
     }
 
@@ -320,9 +321,9 @@ impl Edge {
     /// differences and come out bit for bit the same, and every y value computed
     /// from the negated inputs is exactly the negated value, except that a zero may
     /// differ in sign. So the mirrored points are the entry's with y negated, unless
-    /// one of them is zero: then the points are computed directly.
-    fn linearize_oriented(&self, n: usize, out: &mut Vec<Vec2>) {
-        let (key, flip) = self.shape_key(n);
+    /// one of them is zero: then the points are computed directly. `(key, flip)`
+    /// is this edge's [`Edge::shape_key`].
+    fn linearize_oriented(&self, n: usize, (key, flip): (crate::memo::EdgeKey, bool), out: &mut Vec<Vec2>) {
         let shape = if flip { Edge { curve: self.curve.reflected(), ..*self } } else { *self };
         let done = crate::memo::edge_points(key, || shape.relative_linearization(n), |pts| {
             if !flip {
