@@ -54,6 +54,8 @@ pub struct Arena {
     /// Interfaces of previous garments, kept for their buffers (see
     /// [`Arena::clear`]); never read as interfaces.
     pub(crate) spare_interfaces: Vec<InterfaceData>,
+    /// See [`Arena::stop_at_self_intersection`].
+    pub(crate) stop_at_self_intersection: bool,
 }
 
 impl Default for Arena {
@@ -72,7 +74,16 @@ impl Arena {
             interfaces: Vec::new(),
             labels: vec![String::new()],
             spare_interfaces: Vec::new(),
+            stop_at_self_intersection: false,
         }
+    }
+
+    /// Make [`PanelId::check_outline`] fail on a panel outline that crosses itself
+    /// (off by default; kept by [`Arena::clear`]). A filter that turns such garments
+    /// down (the dataset sampler) then stops building one as soon as the outline is
+    /// known, before the costly parts that follow.
+    pub fn stop_at_self_intersection(&mut self, on: bool) {
+        self.stop_at_self_intersection = on;
     }
 
     /// Forget everything (keeping the allocations) to build another garment.

@@ -44,6 +44,14 @@ pub enum Error {
     /// Any other geometric impossibility.
     #[error("geometry: {0}")]
     Geometry(String),
+    /// A panel outline that crosses itself, reported while building only when the
+    /// arena is set to [`crate::Arena::stop_at_self_intersection`] (a validity filter
+    /// stopping early, not a program failure).
+    #[error("self-intersection: the outline of panel '{panel}' crosses itself")]
+    SelfIntersecting {
+        /// Name of the panel.
+        panel: String,
+    },
     /// A garment design the program cannot build.
     #[error("design: {0}")]
     Design(String),

@@ -372,6 +372,17 @@ impl PanelId {
         crate::intersect::has_self_intersection(&crate::intersect::panel_segments(a, self))
     }
 
+    /// With [`Arena::stop_at_self_intersection`] on, fail if the outline crosses
+    /// itself; otherwise do nothing. Garment programs call it where an outline is
+    /// complete but for the splits that later stitches make (splitting an edge keeps
+    /// its points, so a crossing stays one).
+    pub fn check_outline(self, a: &Arena) -> Result<()> {
+        if a.stop_at_self_intersection && self.is_self_intersecting(a) {
+            return Err(crate::Error::SelfIntersecting { panel: self.name(a).to_string() });
+        }
+        Ok(())
+    }
+
     /// Deep copy under a new name: new edges, vertices, interfaces and darts.
     pub fn deep_copy(self, a: &mut Arena, name: &str) -> PanelId {
         let src = a.pd(self).clone();

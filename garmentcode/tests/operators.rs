@@ -297,3 +297,26 @@ fn panel_dart_is_stitched() {
     assert_eq!(pattern.stitches.len(), 1);
     insta::assert_snapshot!("dart", json);
 }
+
+/// `check_outline` is a no-op unless the arena is set to stop at self-intersections;
+/// then it names the panel whose outline crosses itself, and still passes a clean one.
+#[test]
+fn outline_check_stops_only_when_asked() {
+    let mut a = Arena::new();
+    // A bow tie: the loop's second and fourth edges cross at (1, 0.5).
+    let bow = EdgeSeq::from_points(&mut a, &[v2(0.0, 0.0), v2(2.0, 0.0), v2(0.0, 1.0), v2(2.0, 1.0)], true).unwrap();
+    let bow = a.panel_with_edges("bow", bow);
+    let square = rectangle(&mut a, "square", 2.0, 1.0);
+    assert!(bow.is_self_intersecting(&a) && !square.is_self_intersecting(&a));
+    assert_eq!(bow.check_outline(&a), Ok(()));
+    a.stop_at_self_intersection(true);
+    let err = bow.check_outline(&a).unwrap_err();
+    assert_eq!(err, garmentcode::Error::SelfIntersecting { panel: "bow".into() });
+    assert_eq!(err.to_string(), "self-intersection: the outline of panel 'bow' crosses itself");
+    assert_eq!(square.check_outline(&a), Ok(()));
+    // The setting outlives clearing the arena for the next garment.
+    a.clear();
+    let bow = EdgeSeq::from_points(&mut a, &[v2(0.0, 0.0), v2(2.0, 0.0), v2(0.0, 1.0), v2(2.0, 1.0)], true).unwrap();
+    let bow = a.panel_with_edges("bow", bow);
+    assert!(bow.check_outline(&a).is_err());
+}

@@ -450,6 +450,15 @@ pub struct Resolved {
     pub b_strapless_depth: f64,
 }
 
+/// The armhole interfaces cut into the torso panels, and the torso widths the sleeve
+/// is made for (measured before the cut).
+struct Armholes {
+    front: InterfaceId,
+    back: InterfaceId,
+    front_w: f64,
+    back_w: f64,
+}
+
 /// One half (right or left) of an upper garment with its sleeve and collar.
 #[derive(Clone, Debug, Component)]
 #[component(name = self.name, length = Self::half_length)]
@@ -514,8 +523,14 @@ impl BodiceHalf {
         if design.shirt.strapless && fitted {
             half.make_strapless(a, body, &r)?;
         } else {
-            half.add_sleeves(a, body, design, &r)?;
+            let armholes = half.cut_armholes(a, body, design, &r)?;
             half.add_collars(a, body, design, &r)?;
+            if !design.sleeve.sleeveless {
+                // The torso outlines are complete: a filter can stop before the sleeve.
+                half.ftorso.panel.check_outline(a)?;
+                half.btorso.panel.check_outline(a)?;
+            }
+            half.add_sleeve_panels(a, body, design, &r, armholes)?;
             let rule = StitchRule::new(a, half.ftorso.shoulder, half.btorso.shoulder)?;
             half.stitches.push(rule);
         }
@@ -553,17 +568,30 @@ impl BodiceHalf {
         })
     }
 
-    fn add_sleeves(&mut self, a: &mut Arena, body: &Body, design: &HalfDesign, r: &Resolved) -> Result<()> {
+    /// Cut the armholes into the torso panels (the sleeve's shapes, without its
+    /// panels yet: see [`BodiceHalf::add_sleeve_panels`]).
+    fn cut_armholes(&mut self, a: &mut Arena, body: &Body, design: &HalfDesign, r: &Resolved) -> Result<Armholes> {
         let front_w = self.ftorso.get_width(a, body, r.connecting_width);
         let back_w = self.btorso.get_width(a, body, r.connecting_width);
-        let sleeve = Sleeve::new(a, &self.name, body, &design.sleeve, r.connecting_width, front_w, back_w)?;
-        let (_, f_int) = cut_corner(a, &sleeve.in_front_shape, self.ftorso.shoulder_corner)?;
-        let (_, b_int) = cut_corner(a, &sleeve.in_back_shape, self.btorso.shoulder_corner)?;
+        let sleeve = Sleeve::armholes(a, &self.name, body, &design.sleeve, r.connecting_width, front_w, back_w)?;
+        let (_, front) = cut_corner(a, &sleeve.in_front_shape, self.ftorso.shoulder_corner)?;
+        let (_, back) = cut_corner(a, &sleeve.in_back_shape, self.btorso.shoulder_corner)?;
+        self.sleeve = Some(sleeve);
+        Ok(Armholes { front, back, front_w, back_w })
+    }
+
+    /// Build the sleeve into the armholes cut by [`BodiceHalf::cut_armholes`]. Its
+    /// stitch comes first among the half's stitches, as in the reference, which builds
+    /// the sleeve before the collar.
+    fn add_sleeve_panels(&mut self, a: &mut Arena, body: &Body, design: &HalfDesign, r: &Resolved, armholes: Armholes) -> Result<()> {
+        let Armholes { front: f_int, back: b_int, front_w, back_w } = armholes;
+        let sleeve = self.sleeve.as_mut().expect("armholes cut first");
+        sleeve.add_panels(a, &self.name, body, &design.sleeve, r.connecting_width, front_w, back_w)?;
         if let Some(sleeve_in) = sleeve.in_ {
             let f = f_int.reverse(a, true);
             let b = b_int.reverse(a, false);
             let bodice_int = a.interface_from(&[f, b]);
-            self.stitches.push(StitchRule::new(a, sleeve_in, bodice_int)?);
+            self.stitches.insert(0, StitchRule::new(a, sleeve_in, bodice_int)?);
             let gap = -1.0 - body.arm_pose_angle / 10.0;
             sleeve.place_by_interface(a, sleeve_in, bodice_int, gap, Align::Top);
         }
@@ -572,7 +600,6 @@ impl BodiceHalf {
         let label = format!("{}_armhole", self.name);
         f_int.propagate_label(a, &label);
         b_int.propagate_label(a, &label);
-        self.sleeve = Some(sleeve);
         Ok(())
     }
 

@@ -104,6 +104,7 @@ pub struct Built {
 
 /// Build `design` on `body` into the pattern named `name`, reusing `arena`.
 pub fn build_in(arena: &mut Arena, design: &Design, body: &Body, name: &str) -> Result<Built, BuildError> {
+    arena.stop_at_self_intersection(false);
     let garment = new_garment(arena, design, body)?;
     let (total_length, floor_length) = lengths(arena, &garment, body);
     let self_intersecting = garment.is_self_intersecting(arena);
@@ -133,8 +134,19 @@ pub enum Refusal {
 /// self-intersection): stops at the first that fails, without the work the rest
 /// would take (the dataset sampler turns down about half of what it draws).
 /// The parameter-combination filter is the caller's: it needs no building.
+///
+/// The garments accepted are those [`build_in`] finds valid, but a design failing
+/// several checks is refused for the first in build order: the torso outlines of a
+/// top with sleeves are checked as soon as they are cut, before the sleeves and the
+/// rest of the garment are built (with [`Arena::stop_at_self_intersection`]). The
+/// seams sewn later (sleeve, shoulders, sides, waist) only split torso edges, which
+/// keeps their points, so a torso crossing itself then still does at the end.
 pub fn build_valid_in(arena: &mut Arena, design: &Design, body: &Body, name: &str) -> Result<Built, Refusal> {
-    let garment = new_garment(arena, design, body).map_err(Refusal::Build)?;
+    arena.stop_at_self_intersection(true);
+    let garment = new_garment(arena, design, body).map_err(|e| match e {
+        BuildError::Geometry(garmentcode::Error::SelfIntersecting { .. }) => Refusal::SelfIntersecting,
+        e => Refusal::Build(e),
+    })?;
     let (total_length, floor_length) = lengths(arena, &garment, body);
     if total_length > floor_length + 1.0 {
         return Err(Refusal::TooLong { total_length, floor_length });

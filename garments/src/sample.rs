@@ -11,7 +11,9 @@
 //! (up to [`MAX_ATTEMPTS`] times) when it fails a filter: the parameter-combination
 //! filter (empty garment or lone belt, gathered skirt without a band, heavy flared
 //! skirt without support), a garment program error, a garment longer than the floor
-//! allows, or a self-intersecting panel outline. Unlike the reference, which checks
+//! allows, or a self-intersecting panel outline. A design failing several is
+//! counted under the first in build order (see [`build_valid_in`]: the torso of a
+//! top with sleeves is checked before the sleeves are built). Unlike the reference, which checks
 //! each design on the neutral body and on a random body, a sample here has one body
 //! (drawn from the given bodies) and is checked on it.
 
@@ -401,6 +403,41 @@ mod tests {
                 Outcome::Exhausted { index, .. } => panic!("sample {index} exhausted"),
             }
         }
+    }
+
+    /// The filters stop early (a sleeved torso is checked before its sleeves are
+    /// built), yet accept exactly the designs that pass every check of a full build.
+    #[test]
+    fn early_torso_check_accepts_what_full_builds_accept() {
+        let s = DatasetSampler::with_defaults(5);
+        let mut arena = Arena::new();
+        let (mut compared, mut sleeved_torso_refused) = (0, 0);
+        for i in 0..40 {
+            for attempt in 0..3 {
+                let (design, body) = s.attempt(i, attempt);
+                if check_param_combinations(&design).is_err() {
+                    continue;
+                }
+                let early = s.check(&mut arena, &design, body, "early");
+                let panels_made = arena.panel_count();
+                let full = crate::build::build_in(&mut arena, &design, &s.bodies[body].body, "full");
+                let full_ok = matches!(&full, Ok(b) if b.checks.passed());
+                assert_eq!(early.is_ok(), full_ok, "sample {i} attempt {attempt}: {:?}", early.err());
+                // A refusal for self-intersection may pre-empt a later build error.
+                if let (Err((Reason::SelfIntersecting, _)), Ok(built)) = (&early, &full) {
+                    let torso_crosses = built.pattern.panels.iter().any(|p| {
+                        p.name.contains("torso") && garmentcode::intersect::has_self_intersection(&garmentcode::intersect::spec_segments(p))
+                    });
+                    let sleeves = built.pattern.panels.iter().any(|p| p.name.contains("sleeve"));
+                    // Stopped before the sleeves: fewer panels made than a full build has.
+                    if torso_crosses && sleeves && panels_made < built.pattern.panels.len() {
+                        sleeved_torso_refused += 1;
+                    }
+                }
+                compared += 1;
+            }
+        }
+        assert!(compared > 60 && sleeved_torso_refused > 3, "{compared} designs compared, {sleeved_torso_refused} sleeved torsos refused");
     }
 
     #[test]

@@ -89,16 +89,22 @@ pub fn armhole_angle(a: &mut Arena, incl: f64, width: f64, incl_coeff: f64, w_co
     EdgeSeq::from_points(a, &[v2(0.0, 0.0), v2(incl * (1.0 - incl_coeff), w_coeff * width), v2(incl, width)], false)
 }
 
-/// Curved armhole cut `(0,0) → (incl, width)` and, with `invert`, the matching sleeve
-/// opening: the cut's curve turned down by the sleeve's rest `angle`, re-fitted so it
-/// leaves vertically and keeps the cut's length.
-pub fn armhole_curve(a: &mut Arena, incl: f64, width: f64, angle: f64, bottom_angle_mix: f64, invert: bool) -> Result<(EdgeSeq, Option<EdgeSeq>)> {
-    let cut = Edge { start: v2(incl, width), end: v2(0.0, 0.0), curve: Curve::Cubic(v2(0.5, 0.2), v2(0.8, 0.35)) };
+/// Curved armhole cut `(0,0) → (incl, width)`.
+pub fn armhole_curve(a: &mut Arena, incl: f64, width: f64) -> Result<EdgeSeq> {
+    Ok(EdgeSeq(vec![a.add_edge(armhole_cut(incl, width).reversed())?]))
+}
+
+/// The curve of [`armhole_curve`], from the armhole's bottom up.
+fn armhole_cut(incl: f64, width: f64) -> Edge {
+    Edge { start: v2(incl, width), end: v2(0.0, 0.0), curve: Curve::Cubic(v2(0.5, 0.2), v2(0.8, 0.35)) }
+}
+
+/// The sleeve opening matching the curved armhole cut of [`armhole_curve`]: the cut's
+/// curve turned down by the sleeve's rest `angle`, re-fitted so it leaves vertically
+/// and keeps the cut's length (the inversion, the costly part of a sleeve).
+pub fn sleeve_opening(a: &mut Arena, incl: f64, width: f64, angle: f64, bottom_angle_mix: f64) -> Result<EdgeSeq> {
+    let cut = armhole_cut(incl, width);
     let reversed = cut.reversed();
-    let chain = EdgeSeq(vec![a.add_edge(reversed)?]);
-    if !invert {
-        return Ok((chain, None));
-    }
     // QUIRK: reversing the reference's edge mutated its control-point list, so the
     // initial guess is derived from the *reversed* points with the last y negated.
     let Curve::Cubic(c1, c2) = reversed.curve else { unreachable!() };
@@ -114,7 +120,7 @@ pub fn armhole_curve(a: &mut Arena, incl: f64, width: f64, angle: f64, bottom_an
     let abs = inv.abs_controls();
     let fitted = match_tangents([inv.start, abs[0], abs[1], inv.end], down, dir, cut.length());
     let opening = Edge::from_bezier(&Bezier::Cubic(fitted)).reversed();
-    Ok((chain, Some(EdgeSeq(vec![a.add_edge(opening)?]))))
+    Ok(EdgeSeq(vec![a.add_edge(opening)?]))
 }
 
 /// Sun-like decorative cut: rays alternating between two concentric arcs.

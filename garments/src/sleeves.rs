@@ -114,40 +114,46 @@ pub struct Sleeve {
 }
 
 impl Sleeve {
-    /// Build the sleeve of side `tag` for an armhole `connecting_width` deep between
-    /// torso panels `front_w` and `back_w` wide at that depth.
-    pub fn new(a: &mut Arena, tag: &str, body: &Body, s: &SleeveParams, connecting_width: f64, front_w: f64, back_w: f64) -> Result<Sleeve> {
-        let d = body.derived();
-        let sleeve_balance = d.base_sleeve_balance / 2.0;
-        let rest_angle = f64::max(s.sleeve_angle.to_radians(), d.shoulder_incl.to_radians());
+    /// The armhole shapes of side `tag` for an armhole `connecting_width` deep between
+    /// torso panels `front_w` and `back_w` wide at that depth: the sleeve before its
+    /// panels ([`Sleeve::add_panels`] builds them), so that the torso can be cut and
+    /// checked before the costly sleeve-opening inversion.
+    pub fn armholes(a: &mut Arena, tag: &str, body: &Body, s: &SleeveParams, connecting_width: f64, front_w: f64, back_w: f64) -> Result<Sleeve> {
+        let sleeve_balance = body.derived().base_sleeve_balance / 2.0;
         let sc = s.smoothing_coeff;
-        let shape = |a: &mut Arena, incl: f64| -> Result<(EdgeSeq, Option<EdgeSeq>)> {
-            if s.sleeveless {
-                match s.armhole_shape {
-                    ArmholeShape::ArmholeSquare => Ok((shapes::armhole_square(a, incl, connecting_width)?, None)),
-                    ArmholeShape::ArmholeAngle => Ok((shapes::armhole_angle(a, incl, connecting_width, sc, sc)?, None)),
-                    ArmholeShape::ArmholeCurve => shapes::armhole_curve(a, incl, connecting_width, rest_angle, s.opening_dir_mix, false),
-                }
-            } else {
-                shapes::armhole_curve(a, incl, connecting_width, rest_angle, s.opening_dir_mix, true)
-            }
+        let mut shape = |incl: f64| match s.armhole_shape {
+            _ if !s.sleeveless => shapes::armhole_curve(a, incl, connecting_width),
+            ArmholeShape::ArmholeSquare => shapes::armhole_square(a, incl, connecting_width),
+            ArmholeShape::ArmholeAngle => shapes::armhole_angle(a, incl, connecting_width, sc, sc),
+            ArmholeShape::ArmholeCurve => shapes::armhole_curve(a, incl, connecting_width),
         };
-        let (front_project, front_opening) = shape(a, front_w - sleeve_balance)?;
-        let (back_project, back_opening) = shape(a, back_w - sleeve_balance)?;
-        let mut sleeve = Sleeve {
+        let in_front_shape = shape(front_w - sleeve_balance)?;
+        let in_back_shape = shape(back_w - sleeve_balance)?;
+        Ok(Sleeve {
             name: format!("Sleeve_{tag}"),
-            in_front_shape: front_project,
-            in_back_shape: back_project,
+            in_front_shape,
+            in_back_shape,
             front: None,
             back: None,
             cuff: None,
             in_: None,
             out: None,
             stitches: Vec::new(),
-        };
-        let (Some(mut front_opening), Some(mut back_opening)) = (front_opening, back_opening) else {
-            return Ok(sleeve);
-        };
+        })
+    }
+
+    /// Build the sleeve panels (and cuff) of a sleeve made by [`Sleeve::armholes`]
+    /// with the same arguments; nothing for a sleeveless side.
+    pub fn add_panels(&mut self, a: &mut Arena, tag: &str, body: &Body, s: &SleeveParams, connecting_width: f64, front_w: f64, back_w: f64) -> Result<()> {
+        if s.sleeveless {
+            return Ok(());
+        }
+        let d = body.derived();
+        let sleeve_balance = d.base_sleeve_balance / 2.0;
+        let rest_angle = f64::max(s.sleeve_angle.to_radians(), d.shoulder_incl.to_radians());
+        let opening = |a: &mut Arena, incl: f64| shapes::sleeve_opening(a, incl, connecting_width, rest_angle, s.opening_dir_mix);
+        let mut front_opening = opening(a, front_w - sleeve_balance)?;
+        let mut back_opening = opening(a, back_w - sleeve_balance)?;
         if front_w != back_w {
             let tol = 0.2 / front_opening.length(a);
             even_armhole_openings(a, &mut front_opening, &mut back_opening, tol)?;
@@ -160,13 +166,13 @@ impl Sleeve {
         front.panel.translate_by(a, v3(0.0, 0.0, 15.0));
         let back = SleevePanel::new(a, &format!("{tag}_sleeve_b"), body, s, &back_opening, -cuff_len_adj)?;
         back.panel.translate_by(a, v3(0.0, 0.0, -15.0));
-        sleeve.stitches.push(StitchRule::new(a, front.top, back.top)?);
-        sleeve.stitches.push(StitchRule::new(a, front.bottom, back.bottom)?);
+        self.stitches.push(StitchRule::new(a, front.top, back.top)?);
+        self.stitches.push(StitchRule::new(a, front.bottom, back.bottom)?);
         let back_in = back.in_.reverse(a, true);
-        sleeve.in_ = Some(a.interface_from(&[front.in_, back_in]));
+        self.in_ = Some(a.interface_from(&[front.in_, back_in]));
         let mut out = a.interface_from(&[front.out, back.out]);
-        sleeve.front = Some(front);
-        sleeve.back = Some(back);
+        self.front = Some(front);
+        self.back = Some(back);
         if let Some(kind) = s.cuff_type {
             let circ = f64::max(out.length(a) / s.cuff_top_ruffle, body.wrist);
             let params = CuffParams {
@@ -179,14 +185,14 @@ impl Sleeve {
             let cuff = Cuff::new(a, kind, &format!("sl_{tag}"), &params)?;
             cuff.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, -90.0]));
             cuff.place_by_interface(a, cuff.top(), out, 2.0, Align::Top);
-            sleeve.stitches.push(StitchRule::new(a, cuff.top(), out)?);
+            self.stitches.push(StitchRule::new(a, cuff.top(), out)?);
             out = cuff.bottom();
-            sleeve.cuff = Some(cuff);
+            self.cuff = Some(cuff);
         }
-        sleeve.out = Some(out);
-        sleeve.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, body.arm_pose_angle]));
-        sleeve.set_panel_label(a, "arm", true);
-        Ok(sleeve)
+        self.out = Some(out);
+        self.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, body.arm_pose_angle]));
+        self.set_panel_label(a, "arm", true);
+        Ok(())
     }
 
     fn sleeve_length(&self, a: &Arena) -> f64 {
