@@ -459,6 +459,14 @@ struct Armholes {
     back_w: f64,
 }
 
+/// The neckline cut into the torso panels: the shapes (which the collar follows)
+/// and the interfaces over the cut.
+struct Neckline {
+    shapes: (EdgeSeq, EdgeSeq),
+    front: InterfaceId,
+    back: InterfaceId,
+}
+
 /// One half (right or left) of an upper garment with its sleeve and collar.
 #[derive(Clone, Debug, Component)]
 #[component(name = self.name, length = Self::half_length)]
@@ -522,14 +530,16 @@ impl BodiceHalf {
         let r = half.eval_dep_params(a, body, design)?;
         if design.shirt.strapless && fitted {
             half.make_strapless(a, body, &r)?;
+            half.ftorso.panel.check_outline(a)?;
+            half.btorso.panel.check_outline(a)?;
         } else {
             let armholes = half.cut_armholes(a, body, design, &r)?;
-            half.add_collars(a, body, design, &r)?;
-            if !design.sleeve.sleeveless {
-                // The torso outlines are complete: a filter can stop before the sleeve.
-                half.ftorso.panel.check_outline(a)?;
-                half.btorso.panel.check_outline(a)?;
-            }
+            let neckline = half.cut_neckline(a, design, &r)?;
+            // The torso outlines are complete but for seam splits: a filter can stop
+            // before the sleeve and collar panels (the costly part) and the rest.
+            half.ftorso.panel.check_outline(a)?;
+            half.btorso.panel.check_outline(a)?;
+            half.add_collar(a, body, design, &r, neckline)?;
             half.add_sleeve_panels(a, body, design, &r, armholes)?;
             let rule = StitchRule::new(a, half.ftorso.shoulder, half.btorso.shoulder)?;
             half.stitches.push(rule);
@@ -603,11 +613,19 @@ impl BodiceHalf {
         Ok(())
     }
 
-    fn add_collars(&mut self, a: &mut Arena, body: &Body, design: &HalfDesign, r: &Resolved) -> Result<()> {
-        let collar = Collar::new(a, &self.name, body, &design.collar, r)?;
-        let (front_proj, back_proj) = collar.projections();
-        let (_, fc) = cut_corner(a, &front_proj, self.ftorso.collar_corner)?;
-        let (_, bc) = cut_corner(a, &back_proj, self.btorso.collar_corner)?;
+    /// Cut the neckline into the torso panels (the collar's panels come later: see
+    /// [`BodiceHalf::add_collar`]).
+    fn cut_neckline(&mut self, a: &mut Arena, design: &HalfDesign, r: &Resolved) -> Result<Neckline> {
+        let shapes = Collar::necklines(a, &design.collar, r)?;
+        let (_, front) = cut_corner(a, &shapes.0, self.ftorso.collar_corner)?;
+        let (_, back) = cut_corner(a, &shapes.1, self.btorso.collar_corner)?;
+        Ok(Neckline { shapes, front, back })
+    }
+
+    /// Build the collar over the neckline cut by [`BodiceHalf::cut_neckline`].
+    fn add_collar(&mut self, a: &mut Arena, body: &Body, design: &HalfDesign, r: &Resolved, neckline: Neckline) -> Result<()> {
+        let Neckline { shapes, front: fc, back: bc } = neckline;
+        let collar = Collar::new(a, &self.name, body, &design.collar, r, shapes)?;
         if let Some(bottom) = collar.bottom() {
             let both = a.interface_from(&[fc, bc]);
             self.stitches.push(StitchRule::new(a, both, bottom)?);

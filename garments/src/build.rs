@@ -137,10 +137,11 @@ pub enum Refusal {
 ///
 /// The garments accepted are those [`build_in`] finds valid, but a design failing
 /// several checks is refused for the first in build order: the torso outlines of a
-/// top with sleeves are checked as soon as they are cut, before the sleeves and the
-/// rest of the garment are built (with [`Arena::stop_at_self_intersection`]). The
-/// seams sewn later (sleeve, shoulders, sides, waist) only split torso edges, which
-/// keeps their points, so a torso crossing itself then still does at the end.
+/// top are checked as soon as its armholes and neckline are cut, before the sleeves,
+/// the collar and the rest of the garment are built (with
+/// [`Arena::stop_at_self_intersection`]). The seams sewn later (sleeve, collar,
+/// shoulders, sides, waist) only split torso edges, which keeps their points, so a
+/// torso crossing itself then still does at the end.
 pub fn build_valid_in(arena: &mut Arena, design: &Design, body: &Body, name: &str) -> Result<Built, Refusal> {
     arena.stop_at_self_intersection(true);
     let garment = new_garment(arena, design, body).map_err(|e| match e {

@@ -198,22 +198,37 @@ pub enum Collar {
 }
 
 impl Collar {
-    /// Build the collar component the design asks for (none or unknown: just the
-    /// neckline).
-    pub fn new(a: &mut Arena, tag: &str, body: &Body, c: &CollarParams, r: &Resolved) -> Result<Collar> {
+    /// The front and back neckline shapes the collar style cuts into the torso:
+    /// known before the collar's panels are built ([`Collar::new`]).
+    pub fn necklines(a: &mut Arena, c: &CollarParams, r: &Resolved) -> Result<(EdgeSeq, EdgeSeq)> {
         let width = r.collar_width;
-        match c.style {
+        Ok(match c.style {
             None => {
                 let f = NeckArgs { angle: c.fc_angle, flip: c.f_flip_curve, x: c.f_bezier_x, y: c.f_bezier_y };
                 let b = NeckArgs { angle: c.bc_angle, flip: c.b_flip_curve, x: c.b_bezier_x, y: c.b_bezier_y };
-                let front_proj = shapes::neckline(a, c.f_collar, r.fc_depth, width, f)?;
-                let back_proj = shapes::neckline(a, c.b_collar, r.bc_depth, width, b)?;
-                Ok(Collar::NoPanels { front_proj, back_proj })
+                (shapes::neckline(a, c.f_collar, r.fc_depth, width, f)?, shapes::neckline(a, c.b_collar, r.bc_depth, width, b)?)
             }
+            Some(CollarStyle::Turtle | CollarStyle::Hood2Panels) => {
+                (shapes::circle_neck(a, r.fc_depth, width)?, shapes::circle_neck(a, r.bc_depth, width)?)
+            }
+            Some(CollarStyle::SimpleLapel) => {
+                // QUIRK: the lapel does not pass the Bézier parameters to the front
+                // neckline (its defaults x = 0.5, y = 0.3 apply).
+                let args = NeckArgs { angle: c.fc_angle, flip: c.f_flip_curve, x: 0.5, y: 0.3 };
+                (shapes::neckline(a, c.f_collar, r.fc_depth, width, args)?, shapes::circle_neck(a, r.bc_depth, width)?)
+            }
+        })
+    }
+
+    /// Build the collar component the design asks for (none or unknown: just the
+    /// neckline) over the `necklines` made by [`Collar::necklines`].
+    pub fn new(a: &mut Arena, tag: &str, body: &Body, c: &CollarParams, r: &Resolved, necklines: (EdgeSeq, EdgeSeq)) -> Result<Collar> {
+        let width = r.collar_width;
+        let (f, b) = necklines;
+        match c.style {
+            None => Ok(Collar::NoPanels { front_proj: f, back_proj: b }),
             Some(CollarStyle::Turtle) => {
                 let depth = c.depth;
-                let f = shapes::circle_neck(a, r.fc_depth, width)?;
-                let b = shapes::circle_neck(a, r.bc_depth, width)?;
                 let (lf, lb) = (f.length(a), b.length(a));
                 let hp = body.height - body.head_l + depth;
                 let front = StraightBandPanel::new(a, &format!("{tag}_collar_front"), lf, depth, None)?;
@@ -227,11 +242,6 @@ impl Collar {
             }
             Some(CollarStyle::SimpleLapel) => {
                 let depth = c.depth;
-                // QUIRK: the lapel does not pass the Bézier parameters to the front
-                // neckline (its defaults x = 0.5, y = 0.3 apply).
-                let args = NeckArgs { angle: c.fc_angle, flip: c.f_flip_curve, x: 0.5, y: 0.3 };
-                let f = shapes::neckline(a, c.f_collar, r.fc_depth, width, args)?;
-                let b = shapes::circle_neck(a, r.bc_depth, width)?;
                 let (lf, lb) = (f.length(a), b.length(a));
                 let hp = body.height - body.head_l + depth * 2.0;
                 let front = SimpleLapelPanel::new(a, &format!("{tag}_collar_front"), lf, depth)?;
@@ -256,8 +266,6 @@ impl Collar {
                 Ok(Collar::Lapel(l, f, b))
             }
             Some(CollarStyle::Hood2Panels) => {
-                let f = shapes::circle_neck(a, r.fc_depth, width)?;
-                let b = shapes::circle_neck(a, r.bc_depth, width)?;
                 let (lf, lb) = (f.length(a), b.length(a));
                 let panel = HoodPanel::new(
                     a,

@@ -13,7 +13,7 @@
 //! skirt without support), a garment program error, a garment longer than the floor
 //! allows, or a self-intersecting panel outline. A design failing several is
 //! counted under the first in build order (see [`build_valid_in`]: the torso of a
-//! top with sleeves is checked before the sleeves are built). Unlike the reference, which checks
+//! top is checked before its sleeves and collar are built). Unlike the reference, which checks
 //! each design on the neutral body and on a random body, a sample here has one body
 //! (drawn from the given bodies) and is checked on it.
 
@@ -405,7 +405,7 @@ mod tests {
         }
     }
 
-    /// The filters stop early (a sleeved torso is checked before its sleeves are
+    /// The filters stop early (a torso is checked before its sleeves and collar are
     /// built), yet accept exactly the designs that pass every check of a full build.
     #[test]
     fn early_torso_check_accepts_what_full_builds_accept() {
