@@ -530,15 +530,12 @@ impl BodiceHalf {
         let r = half.eval_dep_params(a, body, design)?;
         if design.shirt.strapless && fitted {
             half.make_strapless(a, body, &r)?;
-            half.ftorso.panel.check_outline(a)?;
-            half.btorso.panel.check_outline(a)?;
+            half.check_torso_outlines(a)?;
         } else {
             let armholes = half.cut_armholes(a, body, design, &r)?;
             let neckline = half.cut_neckline(a, design, &r)?;
-            // The torso outlines are complete but for seam splits: a filter can stop
-            // before the sleeve and collar panels (the costly part) and the rest.
-            half.ftorso.panel.check_outline(a)?;
-            half.btorso.panel.check_outline(a)?;
+            // Before the sleeve and collar panels (the costly part) and the rest.
+            half.check_torso_outlines(a)?;
             half.add_collar(a, body, design, &r, neckline)?;
             half.add_sleeve_panels(a, body, design, &r, armholes)?;
             let rule = StitchRule::new(a, half.ftorso.shoulder, half.btorso.shoulder)?;
@@ -576,6 +573,13 @@ impl BodiceHalf {
             f_strapless_depth,
             b_strapless_depth,
         })
+    }
+
+    /// [`PanelId::check_outline`] of both torso panels, once their outlines are cut
+    /// (the seams sewn later only split their edges).
+    fn check_torso_outlines(&self, a: &Arena) -> Result<()> {
+        self.ftorso.panel.check_outline(a)?;
+        self.btorso.panel.check_outline(a)
     }
 
     /// Cut the armholes into the torso panels (the sleeve's shapes, without its

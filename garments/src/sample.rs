@@ -13,9 +13,9 @@
 //! skirt without support), a garment program error, a garment longer than the floor
 //! allows, or a self-intersecting panel outline. A design failing several is
 //! counted under the first in build order (see [`build_valid_in`]: the torso of a
-//! top is checked before its sleeves and collar are built). Unlike the reference, which checks
-//! each design on the neutral body and on a random body, a sample here has one body
-//! (drawn from the given bodies) and is checked on it.
+//! top is checked before its sleeves and collar are built). Unlike the reference,
+//! which checks each design on the neutral body and on a random body, a sample here
+//! has one body (drawn from the given bodies) and is checked on it.
 
 use crate::Design;
 use crate::build::{Built, Refusal, build_valid_in};
