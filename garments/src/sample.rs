@@ -21,7 +21,7 @@ use crate::Design;
 use crate::build::{Built, Refusal, build_valid_in};
 use crate::design::{BottomKind, GodetBase, UpperKind};
 use crate::meta::check_param_combinations;
-use garmentcode::params::{DesignError, Sampler, sample_rng};
+use garmentcode::params::{DesignError, Sampler, below, sample_rng};
 use garmentcode::{Arena, Body, DesignSpace, Params};
 use rand_chacha::rand_core::RngCore;
 use std::fmt;
@@ -268,17 +268,6 @@ impl DatasetSampler {
         let pose = if design.meta.bottom == Some(BottomKind::Pants) { "_apart" } else { "" };
         b.body_sample = Some(format!("{}{pose}", nb.name));
         b
-    }
-}
-
-/// Uniform integer in [0, n) without modulo bias (n ≥ 1).
-fn below(rng: &mut impl RngCore, n: u64) -> u64 {
-    let zone = (u64::MAX / n) * n;
-    loop {
-        let x = rng.next_u64();
-        if x < zone {
-            return x % n;
-        }
     }
 }
 

@@ -20,7 +20,7 @@ mod space;
 mod writer;
 
 pub use io::{DesignError, from_values, read_design, read_design_values, write_design, write_values};
-pub use sample::{Sampler, sample_rng};
+pub use sample::{Sampler, below, sample_rng};
 
 /// Testing aids; not part of the stable API.
 #[doc(hidden)]

@@ -127,8 +127,9 @@ fn unit(rng: &mut impl RngCore) -> f64 {
     (rng.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
 }
 
-/// Uniform integer in [0, n) without modulo bias.
-fn below(rng: &mut impl RngCore, n: u64) -> u64 {
+/// Uniform integer in [0, n) without modulo bias (n ≥ 1): the draw behind integer
+/// and categorical parameters, shared with samplers built on [`sample_rng`].
+pub fn below(rng: &mut impl RngCore, n: u64) -> u64 {
     let zone = (u64::MAX / n) * n;
     loop {
         let x = rng.next_u64();
