@@ -60,7 +60,17 @@ fn cli(bencher: divan::Bencher, jobs: usize) {
         })
         .bench_local_values(|dir: PathBuf| {
             let status = Command::new(env!("CARGO_BIN_EXE_garmentcode"))
-                .args(["sample", "--n", &CLI_SAMPLES.to_string(), "--seed", &SEED.to_string(), "--jobs", &jobs.to_string(), "--formats", "json"])
+                .args([
+                    "sample",
+                    "--n",
+                    &CLI_SAMPLES.to_string(),
+                    "--seed",
+                    &SEED.to_string(),
+                    "--jobs",
+                    &jobs.to_string(),
+                    "--formats",
+                    "json",
+                ])
                 .arg("--out")
                 .arg(&dir)
                 .stderr(std::process::Stdio::null())

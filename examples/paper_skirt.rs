@@ -20,8 +20,7 @@ use garmentcode::ops::distribute_y;
 use garmentcode::params::{read_design, write_design};
 use garmentcode::slots::Top;
 use garmentcode::{
-    Arena, Body, EdgeSeq, InterfaceId, PanelId, Params, PartExt, Rotation, Slot, SlotExt, StitchRule, Vec2, Vec3,
-    component,
+    Arena, Body, EdgeSeq, InterfaceId, PanelId, Params, PartExt, Rotation, Slot, SlotExt, StitchRule, Vec2, Vec3, component,
 };
 
 /// Design parameters of the skirt (the `skirt:` group of a design file).
@@ -61,12 +60,8 @@ pub struct ThinSkirtPanel {
 impl ThinSkirtPanel {
     pub fn new(a: &mut Arena, name: &str, top_width: f64, bottom_width: f64, length: f64) -> garmentcode::Result<Self> {
         let flare = (bottom_width - top_width) / 2.0;
-        let corners = [
-            Vec2::new(0.0, 0.0),
-            Vec2::new(flare, length),
-            Vec2::new(flare + top_width, length),
-            Vec2::new(2.0 * flare + top_width, 0.0),
-        ];
+        let corners =
+            [Vec2::new(0.0, 0.0), Vec2::new(flare, length), Vec2::new(flare + top_width, length), Vec2::new(2.0 * flare + top_width, 0.0)];
         let edges = EdgeSeq::from_points(a, &corners, true)?;
         let panel = a.panel_with_edges(name, edges.clone());
         panel.top_center_pivot(a);

@@ -11,9 +11,7 @@ use std::f64::consts::PI;
 
 use garmentcode::draw::{DrawOptions, to_svg};
 use garmentcode::ops::{DartSize, dart_shape};
-use garmentcode::{
-    Arena, Component, EdgeSeq, InterfaceId, Node, PanelId, Part, PartExt, Rotation, StitchRule, Vec2, Vec3,
-};
+use garmentcode::{Arena, Component, EdgeSeq, InterfaceId, Node, PanelId, Part, PartExt, Rotation, StitchRule, Vec2, Vec3};
 
 /// Body measurements the skirt is fitted to (cm).
 pub const WAIST: f64 = 78.0;
@@ -68,12 +66,7 @@ impl Component for Skirt {
 fn gore(a: &mut Arena, top_width: f64, hem_width: f64) -> garmentcode::Result<PanelId> {
     let top = top_width + DART_WIDTH;
     let flare = (hem_width - top) / 2.0;
-    let corners = [
-        Vec2::new(0.0, 0.0),
-        Vec2::new(flare, LENGTH),
-        Vec2::new(flare + top, LENGTH),
-        Vec2::new(2.0 * flare + top, 0.0),
-    ];
+    let corners = [Vec2::new(0.0, 0.0), Vec2::new(flare, LENGTH), Vec2::new(flare + top, LENGTH), Vec2::new(2.0 * flare + top, 0.0)];
     let mut outline = EdgeSeq::from_points(a, &corners, true)?;
     let (right_side, top_edge, left_side, hem) = (outline[0], outline[1], outline[2], outline[3]);
 
@@ -88,12 +81,9 @@ fn gore(a: &mut Arena, top_width: f64, hem_width: f64) -> garmentcode::Result<Pa
 
     // Rotation and placement pivot: the middle of the top edge.
     panel.set_pivot(a, Vec2::new(flare + top / 2.0, LENGTH), false);
-    for (name, edges) in [
-        ("right", EdgeSeq::from(right_side)),
-        ("top", top_pieces),
-        ("left", EdgeSeq::from(left_side)),
-        ("bottom", EdgeSeq::from(hem)),
-    ] {
+    for (name, edges) in
+        [("right", EdgeSeq::from(right_side)), ("top", top_pieces), ("left", EdgeSeq::from(left_side)), ("bottom", EdgeSeq::from(hem))]
+    {
         let iface = a.interface(panel, edges);
         panel.add_interface(a, name, iface);
     }
@@ -129,20 +119,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = std::path::PathBuf::from(std::env::args().nth(1).unwrap_or_else(|| "out/skirt_runtime".into()));
     let mut a = Arena::new();
     let skirt = build(&mut a)?;
-    println!(
-        "waist interface: {:.2} cm over {} edges (body waist {WAIST} cm)",
-        skirt.waist.length(&a),
-        skirt.waist.len(&a)
-    );
+    println!("waist interface: {:.2} cm over {} edges (body waist {WAIST} cm)", skirt.waist.length(&a), skirt.waist.len(&a));
     let pattern = skirt.assemble(&mut a, "gored_skirt")?;
     std::fs::create_dir_all(&out)?;
     std::fs::write(out.join("specification.json"), pattern.to_json()?)?;
     std::fs::write(out.join("pattern.svg"), to_svg(&pattern, &DrawOptions::default())?)?;
-    println!(
-        "{} panels, {} stitches written to {}",
-        pattern.panels.len(),
-        pattern.stitches.len(),
-        out.display()
-    );
+    println!("{} panels, {} stitches written to {}", pattern.panels.len(), pattern.stitches.len(), out.display());
     Ok(())
 }

@@ -307,7 +307,12 @@ fn a_user_designs_a_garment_in_the_browser() {
     assert!(first.contains("right_ftorso"), "the t-shirt's panels are drawn with their names");
     let n_controls = b.js("return document.querySelectorAll('.param').length").as_u64().unwrap();
     assert!(n_controls > 100, "a control per parameter: {n_controls}");
-    for (path, kind) in [("shirt.length", "input[type=range]"), ("sleeve.sleeveless", "input[type=checkbox]"), ("meta.bottom", "select"), ("sleeve.cuff.type", "select")] {
+    for (path, kind) in [
+        ("shirt.length", "input[type=range]"),
+        ("sleeve.sleeveless", "input[type=checkbox]"),
+        ("meta.bottom", "select"),
+        ("sleeve.cuff.type", "select"),
+    ] {
         b.find(&format!(".param[data-path='{path}'] {kind}"));
     }
     b.screenshot(&scratch.join("1-loaded.png"));
@@ -348,7 +353,8 @@ fn a_user_designs_a_garment_in_the_browser() {
     let uploaded = b.wait_drawing("the uploaded design's drawing", v);
     assert!(uploaded.contains("pant_f_r"), "trousers drawn");
     assert!(b.js("return document.getElementById('overlay').hidden").as_bool().unwrap(), "the rejection is gone");
-    let bottom = b.js("const s = document.querySelector(\".param[data-path='meta.bottom'] select\"); return s.options[s.selectedIndex].text");
+    let bottom =
+        b.js("const s = document.querySelector(\".param[data-path='meta.bottom'] select\"); return s.options[s.selectedIndex].text");
     assert_eq!(bottom, "Pants");
     assert_eq!(b.js("return document.querySelector(\".param[data-path='pants.length'] input.num\").value"), "0.8");
     b.screenshot(&scratch.join("3-uploaded.png"));
@@ -356,7 +362,8 @@ fn a_user_designs_a_garment_in_the_browser() {
     // Download the specification: the library's pattern of the uploaded file.
     b.click(&b.find("#download-spec"));
     let spec = downloaded(&downloads, "specification.json");
-    let design = garmentcode::params::read_design(UPLOADED_DESIGN, "upload", &<garments::Design as garmentcode::Params>::design_space()).unwrap();
+    let design =
+        garmentcode::params::read_design(UPLOADED_DESIGN, "upload", &<garments::Design as garmentcode::Params>::design_space()).unwrap();
     let body = garments::builtin::body("mean_all").unwrap();
     let expected = garments::build::build(&design, &body, "upload_design").unwrap().pattern.to_json().unwrap();
     assert_eq!(String::from_utf8(spec.clone()).unwrap(), expected, "the downloaded specification is the library's");

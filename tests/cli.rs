@@ -45,7 +45,8 @@ fn build_default_writes_every_file_and_is_deterministic() {
     }
     assert!(stderr(&o).contains("t-shirt on mean_all"), "{}", stderr(&o));
     // The written design and body files reproduce the garment byte for byte.
-    let o = run(&["build", "--design", "a/design_params.yaml", "--body", "a/body_measurements.yaml", "--name", "t-shirt", "--out", "b"], &dir);
+    let o =
+        run(&["build", "--design", "a/design_params.yaml", "--body", "a/body_measurements.yaml", "--name", "t-shirt", "--out", "b"], &dir);
     assert_eq!(code(&o), 0, "{}", stderr(&o));
     for f in ["specification.json", "pattern.svg", "pattern.png", "design_params.yaml", "body_measurements.yaml", "checks.json"] {
         let (x, y) = (std::fs::read(dir.join("a").join(f)).unwrap(), std::fs::read(dir.join("b").join(f)).unwrap());

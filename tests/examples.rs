@@ -69,7 +69,8 @@ fn paper_skirt_builds_from_its_design_file() {
     insta::assert_snapshot!("paper_skirt", pattern.to_json().unwrap());
 
     // Retargeting: the same design on another body fits that body's waist.
-    let other = Body::from_yaml(&std::fs::read_to_string(root.join("garments/data/bodies/mean_male.yaml")).unwrap(), "mean_male.yaml").unwrap();
+    let other =
+        Body::from_yaml(&std::fs::read_to_string(root.join("garments/data/bodies/mean_male.yaml")).unwrap(), "mean_male.yaml").unwrap();
     let mut a = Arena::new();
     let skirt = paper_skirt::FlareSkirt::new(&mut a, &other, &design.skirt).unwrap();
     assert!((skirt.top.length(&a) - other.waist).abs() < 1e-9);

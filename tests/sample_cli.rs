@@ -133,7 +133,11 @@ fn shards_make_the_unsharded_dataset() {
 }
 
 fn mtimes(dir: &Path) -> BTreeMap<String, SystemTime> {
-    tree(dir).keys().filter(|k| k.starts_with("rand_")).map(|k| (k.clone(), fs::metadata(dir.join(k)).unwrap().modified().unwrap())).collect()
+    tree(dir)
+        .keys()
+        .filter(|k| k.starts_with("rand_"))
+        .map(|k| (k.clone(), fs::metadata(dir.join(k)).unwrap().modified().unwrap()))
+        .collect()
 }
 
 #[test]
@@ -227,7 +231,8 @@ fn design_space_files_and_bodies_are_honoured() {
 
     // A rejected attempt can be rebuilt on its own.
     let replay = dir.join("replay");
-    let r = sample(&["--seed", "1", "--replay", "0:0", "--out", s(&replay), "--design-space", s(&space), "--bodies", "mean_female,mean_male"]);
+    let r =
+        sample(&["--seed", "1", "--replay", "0:0", "--out", s(&replay), "--design-space", s(&space), "--bodies", "mean_female,mean_male"]);
     assert!(r.status.success());
     assert!(replay.join("design_params.yaml").is_file() && replay.join("checks.json").is_file());
     let again = dir.join("again");

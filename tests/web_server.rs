@@ -49,7 +49,11 @@ fn raw(addr: SocketAddr, bytes: &[u8]) -> (u16, String) {
 }
 
 fn post(addr: SocketAddr, path: &str, json: &str) -> (u16, String) {
-    raw(addr, format!("POST {path} HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\nContent-Length: {}\r\n\r\n{json}", json.len()).as_bytes())
+    raw(
+        addr,
+        format!("POST {path} HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\nContent-Length: {}\r\n\r\n{json}", json.len())
+            .as_bytes(),
+    )
 }
 
 fn get(addr: SocketAddr, path: &str) -> (u16, String) {
@@ -83,7 +87,8 @@ fn bad_requests_get_4xx_and_the_server_keeps_serving() {
     let mut huge_head = b"GET / HTTP/1.1\r\nX-Big: ".to_vec();
     huge_head.extend(std::iter::repeat_n(b'a', 64 * 1024));
     huge_head.extend_from_slice(b"\r\n\r\n");
-    let mut huge_body = format!("POST /api/pattern HTTP/1.1\r\nContent-Type: application/json\r\nContent-Length: {}\r\n\r\n", 5 << 20).into_bytes();
+    let mut huge_body =
+        format!("POST /api/pattern HTTP/1.1\r\nContent-Type: application/json\r\nContent-Length: {}\r\n\r\n", 5 << 20).into_bytes();
     huge_body.extend(std::iter::repeat_n(b' ', 256 * 1024)); // starts sending 5 MiB
     let cases: Vec<(Vec<u8>, u16)> = vec![
         (b"\x00\x01\x02garbage\r\n\r\n".to_vec(), 400),
@@ -134,7 +139,10 @@ fn host_and_port_options() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--port"));
     // A port in use is an error that says what to do.
-    let o = Command::new(env!("CARGO_BIN_EXE_garmentcode")).args(["serve", "--port", &s.addr.port().to_string(), "--host", &s.addr.ip().to_string()]).output().unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_garmentcode"))
+        .args(["serve", "--port", &s.addr.port().to_string(), "--host", &s.addr.ip().to_string()])
+        .output()
+        .unwrap();
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--port 0"), "{}", String::from_utf8_lossy(&o.stderr));
 }

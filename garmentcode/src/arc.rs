@@ -38,11 +38,7 @@ pub fn sweep_angle(cy: f64) -> f64 {
 /// and a radius shorter than half the chord gives NaN.
 pub fn cy_from_radius(start: Vec2, end: Vec2, radius: f64, large_arc: bool, right: bool) -> f64 {
     let dist = norm(end - start);
-    let h = if (radius * radius - dist * dist / 4.0).abs() < 1e-3 {
-        0.0
-    } else {
-        (radius * radius - dist * dist / 4.0).sqrt()
-    };
+    let h = if (radius * radius - dist * dist / 4.0).abs() < 1e-3 { 0.0 } else { (radius * radius - dist * dist / 4.0).sqrt() };
     let cy = if large_arc { radius + h } else { radius - h };
     let cy = cy / dist;
     if right { -cy } else { cy }

@@ -67,8 +67,7 @@ impl Bezier {
             }
             Bezier::Cubic([p0, p1, p2, p3]) => {
                 // Horner form, as svgpathtools evaluates it.
-                p0 + t * (3.0 * (p1 - p0)
-                    + t * (3.0 * (p0 + p2) - 6.0 * p1 + t * (-p0 + 3.0 * (p1 - p2) + p3)))
+                p0 + t * (3.0 * (p1 - p0) + t * (3.0 * (p0 + p2) - 6.0 * p1 + t * (-p0 + 3.0 * (p1 - p2) + p3)))
             }
         }
     }
@@ -88,9 +87,7 @@ impl Bezier {
     pub fn second_derivative(&self, t: f64) -> Vec2 {
         match *self {
             Bezier::Quadratic([p0, p1, p2]) => 2.0 * (p2 - 2.0 * p1 + p0),
-            Bezier::Cubic([p0, p1, p2, p3]) => {
-                6.0 * ((1.0 - t) * (p2 - 2.0 * p1 + p0) + t * (p3 - 2.0 * p2 + p1))
-            }
+            Bezier::Cubic([p0, p1, p2, p3]) => 6.0 * ((1.0 - t) * (p2 - 2.0 * p1 + p0) + t * (p3 - 2.0 * p2 + p1)),
         }
     }
 
@@ -325,11 +322,9 @@ impl Bezier {
         // dy/dt as a polynomial a t² + b t + c
         let (a, b, c) = match *self {
             Bezier::Quadratic([p0, p1, p2]) => (0.0, 2.0 * (p0.y - 2.0 * p1.y + p2.y), 2.0 * (p1.y - p0.y)),
-            Bezier::Cubic([p0, p1, p2, p3]) => (
-                3.0 * (-p0.y + 3.0 * p1.y - 3.0 * p2.y + p3.y),
-                6.0 * (p0.y - 2.0 * p1.y + p2.y),
-                3.0 * (p1.y - p0.y),
-            ),
+            Bezier::Cubic([p0, p1, p2, p3]) => {
+                (3.0 * (-p0.y + 3.0 * p1.y - 3.0 * p2.y + p3.y), 6.0 * (p0.y - 2.0 * p1.y + p2.y), 3.0 * (p1.y - p0.y))
+            }
         };
         let mut roots = Vec::new();
         if a.abs() < 1e-14 {

@@ -323,8 +323,7 @@ impl Body {
     /// The reference's body file layout: `body:` with keys sorted (derived `_` keys
     /// first), full precision.
     pub fn to_yaml(&self) -> String {
-        let mut entries: Vec<(String, Node)> =
-            self.entries().into_iter().map(|(k, v)| (k.to_string(), Node::new(Y::Float(v)))).collect();
+        let mut entries: Vec<(String, Node)> = self.entries().into_iter().map(|(k, v)| (k.to_string(), Node::new(Y::Float(v)))).collect();
         if let Some(s) = &self.body_sample {
             entries.push(("body_sample".into(), Node::new(Y::Str(s.clone()))));
         }

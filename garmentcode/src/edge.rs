@@ -116,11 +116,7 @@ impl Segment {
         match self {
             Segment::Line(..) | Segment::Arc(_) => {
                 let len = self.length();
-                if !(0.0..=len).contains(&s) {
-                    None
-                } else {
-                    Some(s / len)
-                }
+                if !(0.0..=len).contains(&s) { None } else { Some(s / len) }
             }
             Segment::Bezier(b) => b.inverse_length(s),
         }
@@ -159,9 +155,7 @@ impl Edge {
             Curve::Line => Segment::Line(self.start, self.end),
             Curve::Arc { cy } => Segment::Arc(arc::svg_arc(self.start, self.end, cy)),
             Curve::Quadratic(c) => Segment::Bezier(Bezier::Quadratic([self.start, self.to_abs(c), self.end])),
-            Curve::Cubic(c1, c2) => {
-                Segment::Bezier(Bezier::Cubic([self.start, self.to_abs(c1), self.to_abs(c2), self.end]))
-            }
+            Curve::Cubic(c1, c2) => Segment::Bezier(Bezier::Cubic([self.start, self.to_abs(c1), self.to_abs(c2), self.end])),
         }
     }
 
@@ -325,16 +319,20 @@ impl Edge {
     /// is this edge's [`Edge::shape_key`].
     fn linearize_oriented(&self, n: usize, (key, flip): (crate::memo::EdgeKey, bool), out: &mut Vec<Vec2>) {
         let shape = if flip { Edge { curve: self.curve.reflected(), ..*self } } else { *self };
-        let done = crate::memo::edge_points(key, || shape.relative_linearization(n), |pts| {
-            if !flip {
-                out.extend(pts.iter().map(|p| self.to_abs(*p)));
-            } else if pts.iter().all(|p| p.y != 0.0) {
-                out.extend(pts.iter().map(|p| self.to_abs(Vec2::new(p.x, -p.y))));
-            } else {
-                return false;
-            }
-            true
-        });
+        let done = crate::memo::edge_points(
+            key,
+            || shape.relative_linearization(n),
+            |pts| {
+                if !flip {
+                    out.extend(pts.iter().map(|p| self.to_abs(*p)));
+                } else if pts.iter().all(|p| p.y != 0.0) {
+                    out.extend(pts.iter().map(|p| self.to_abs(Vec2::new(p.x, -p.y))));
+                } else {
+                    return false;
+                }
+                true
+            },
+        );
         if !done {
             out.extend(self.relative_linearization(n).into_iter().map(|p| self.to_abs(p)));
         }
@@ -368,11 +366,7 @@ impl Edge {
                 let mut out = Vec::with_capacity(fractions.len());
                 let mut prev = self.start;
                 for (i, f) in fractions.iter().enumerate() {
-                    let next = if i + 1 == fractions.len() {
-                        self.end
-                    } else {
-                        Vec2::new(prev.x + f.abs() * d.x, prev.y + f.abs() * d.y)
-                    };
+                    let next = if i + 1 == fractions.len() { self.end } else { Vec2::new(prev.x + f.abs() * d.x, prev.y + f.abs() * d.y) };
                     out.push(Edge::line(prev, next));
                     prev = next;
                 }
@@ -422,9 +416,7 @@ impl Edge {
     pub fn from_bezier(b: &Bezier) -> Edge {
         match *b {
             Bezier::Quadratic([s, c, e]) => Edge { start: s, end: e, curve: Curve::Quadratic(abs_to_rel(s, e, c)) },
-            Bezier::Cubic([s, c1, c2, e]) => {
-                Edge { start: s, end: e, curve: Curve::Cubic(abs_to_rel(s, e, c1), abs_to_rel(s, e, c2)) }
-            }
+            Bezier::Cubic([s, c1, c2, e]) => Edge { start: s, end: e, curve: Curve::Cubic(abs_to_rel(s, e, c1), abs_to_rel(s, e, c2)) },
         }
     }
 
@@ -433,7 +425,6 @@ impl Edge {
         Edge { end: self.start + rotate2d(self.end - self.start, angle), ..*self }
     }
 }
-
 
 #[cfg(test)]
 mod tests {
@@ -518,15 +509,19 @@ mod tests {
         let oriented = |e: &Edge| -> Vec<Vec2> { e.relative_linearization(9).into_iter().map(|p| e.to_abs(p)).collect() };
         let direct = |e: &Edge| -> Vec<Vec2> {
             let r = e.reversed();
-            if r.shape_key(9).0 < e.shape_key(9).0 {
-                oriented(&r).into_iter().rev().collect()
-            } else {
-                oriented(e)
-            }
+            if r.shape_key(9).0 < e.shape_key(9).0 { oriented(&r).into_iter().rev().collect() } else { oriented(e) }
         };
         for k in 0..400 {
             let (a, b, c, d) = (next(), next(), next(), next());
-            let zero = |x: f64| if k % 7 == 0 { 0.0 } else if k % 11 == 0 { -0.0 } else { x };
+            let zero = |x: f64| {
+                if k % 7 == 0 {
+                    0.0
+                } else if k % 11 == 0 {
+                    -0.0
+                } else {
+                    x
+                }
+            };
             let (start, end) = (v(next() * 50.0, next() * 50.0), v(next() * 50.0 + 60.0, next() * 50.0));
             for curve in [
                 Curve::Cubic(v(a, b), v(c, zero(d))),

@@ -43,17 +43,17 @@ pub mod svgpath;
 pub mod yaml;
 
 pub use arena::{Arena, EdgeId, InterfaceId, PanelId, VertexId};
+pub use body::Body;
 pub use component::{Align, Component, Interfaces, Node, Part, PartExt, Parts, Slot, SlotExt};
 pub use edge::{Curve, Edge};
 pub use error::{Error, Result};
 pub use interface::{Gather, Ruffle};
 pub use math::{Vec2, Vec3};
+pub use params::{Choice, DesignSpace, Params};
 pub use pattern::Pattern;
 pub use rotation::Rotation;
 pub use seq::EdgeSeq;
 pub use stitch::StitchRule;
-pub use body::Body;
-pub use params::{Choice, DesignSpace, Params};
 
 /// Derive macros: `#[derive(Params)]`, `#[derive(Choice)]`, `#[derive(Component)]`
 /// and `#[component]`.

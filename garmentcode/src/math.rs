@@ -21,9 +21,7 @@ pub fn close_enough(a: f64, b: f64, tol: f64) -> bool {
 /// `[0, 1]` is an error rather than an extrapolation.
 pub fn lerp(a: f64, b: f64, f: f64) -> Result<f64> {
     if !(0.0..=1.0).contains(&f) {
-        return Err(Error::Geometry(format!(
-            "linear interpolation expects a factor in [0, 1], got {f}"
-        )));
+        return Err(Error::Geometry(format!("linear interpolation expects a factor in [0, 1], got {f}")));
     }
     Ok((1.0 - f) * a + f * b)
 }

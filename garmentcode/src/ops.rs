@@ -6,7 +6,7 @@ use crate::arena::{Arena, EdgeId, InterfaceId, PanelId, VertexId};
 use crate::edge::{Curve, Segment};
 use crate::error::{Error, Result};
 use crate::intersect;
-use crate::math::{Vec2, Vec3, close_enough, cross, norm, vector_angle, SignumOrZero};
+use crate::math::{SignumOrZero, Vec2, Vec3, close_enough, cross, norm, vector_angle};
 use crate::rotation::Rotation;
 use crate::seq::EdgeSeq;
 
@@ -87,11 +87,7 @@ pub fn cut_into_edge(a: &mut Arena, shape: &EdgeSeq, base: EdgeId, offset: f64, 
         return Err(Error::Cut(format!("the shape cannot be placed on the edge (residual {fun:.4})")));
     }
     if t + shift[0] > 1.0 + TOL || t - shift[1] < -TOL {
-        return Err(Error::Cut(format!(
-            "the shape extends past the edge (parameters {:.4}..{:.4})",
-            t - shift[1],
-            t + shift[0]
-        )));
+        return Err(Error::Cut(format!("the shape extends past the edge (parameters {:.4}..{:.4})", t - shift[1], t + shift[0])));
     }
     let base_start = a.start(base);
     let base_end = a.end(base);

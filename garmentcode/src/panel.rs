@@ -404,13 +404,10 @@ impl PanelId {
             a.interfaces.push(d);
             InterfaceId((a.interfaces.len() - 1) as u32)
         };
-        let interfaces: Vec<(String, InterfaceId)> =
-            src.interfaces.iter().map(|(n, i)| (n.clone(), map_iface(a, *i))).collect();
-        let stitches: Vec<StitchRule> =
-            src.stitches.iter().map(|r| StitchRule { a: map_iface(a, r.a), b: map_iface(a, r.b) }).collect();
-        let length_interface = src.length_interface.map(|i| {
-            src.interfaces.iter().position(|(_, j)| *j == i).map(|k| interfaces[k].1).unwrap_or(i)
-        });
+        let interfaces: Vec<(String, InterfaceId)> = src.interfaces.iter().map(|(n, i)| (n.clone(), map_iface(a, *i))).collect();
+        let stitches: Vec<StitchRule> = src.stitches.iter().map(|r| StitchRule { a: map_iface(a, r.a), b: map_iface(a, r.b) }).collect();
+        let length_interface =
+            src.length_interface.map(|i| src.interfaces.iter().position(|(_, j)| *j == i).map(|k| interfaces[k].1).unwrap_or(i));
         let d = a.pd_mut(new);
         d.label = src.label;
         d.translation = src.translation;
@@ -459,11 +456,7 @@ impl PanelId {
                 crate::edge::Curve::Cubic(c1, c2) => Some(Curvature::Cubic(c1.into(), c2.into())),
             };
             let label = a.edge_label(e);
-            specs.push(EdgeSpec {
-                endpoints: [shift, shift + 1],
-                label: (!label.is_empty()).then(|| label.to_string()),
-                curvature,
-            });
+            specs.push(EdgeSpec { endpoints: [shift, shift + 1], label: (!label.is_empty()).then(|| label.to_string()), curvature });
         }
         if vertices.len() > 1 && vertices.last() == vertices.first() {
             vertices.pop();

@@ -278,8 +278,7 @@ impl EdgeSeq {
         let c = self.copy(a);
         for i in 0..c.len() {
             let meets_previous_end = i > 0 && a.end(c[i]) == a.end(c[i - 1]);
-            let meets_next_start =
-                i + 1 < c.len() && (a.start(c[i]) == a.start(c[i + 1]) || a.start(c[i]) == a.end(c[i + 1]));
+            let meets_next_start = i + 1 < c.len() && (a.start(c[i]) == a.start(c[i + 1]) || a.start(c[i]) == a.end(c[i + 1]));
             if meets_previous_end || meets_next_start {
                 a.reverse_edge(c[i]);
             }
@@ -365,8 +364,7 @@ impl EdgeSeq {
                 mi = mi.min(*v);
                 ma = ma.max(*v);
             }
-            let mut b: Vec<Vec2> =
-                verts.iter().copied().filter(|v| v.x == mi.x || v.x == ma.x || v.y == mi.y || v.y == ma.y).collect();
+            let mut b: Vec<Vec2> = verts.iter().copied().filter(|v| v.x == mi.x || v.x == ma.x || v.y == mi.y || v.y == ma.y).collect();
             if b.len() == 2 {
                 if !b.contains(&mi) {
                     b = vec![b[0], mi, b[1]];

@@ -48,7 +48,15 @@ fn schema_lists_every_parameter_in_order() {
     let paths: Vec<&str> = space.params().iter().map(|p| p.path.as_str()).collect();
     assert_eq!(
         paths,
-        ["flare-skirt.length", "flare-skirt.panels", "flare-skirt.curve", "flare-skirt.style", "flare-skirt.extra-style", "flare-skirt.slit", "ease"]
+        [
+            "flare-skirt.length",
+            "flare-skirt.panels",
+            "flare-skirt.curve",
+            "flare-skirt.style",
+            "flare-skirt.extra-style",
+            "flare-skirt.slit",
+            "ease"
+        ]
     );
     let p = space.get("flare-skirt.panels").unwrap();
     assert_eq!(p.kind, Kind::Int);

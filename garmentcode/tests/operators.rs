@@ -3,7 +3,9 @@
 //! checks the geometric facts the operator promises.
 
 use garmentcode::curves::{match_tangents, quadratic_with_extremum};
-use garmentcode::ops::{DartSize, cut_corner, cut_into_edge, cut_many_into_edge, dart_shape, distribute_horizontally, distribute_y, side_with_cut};
+use garmentcode::ops::{
+    DartSize, cut_corner, cut_into_edge, cut_many_into_edge, dart_shape, distribute_horizontally, distribute_y, side_with_cut,
+};
 use garmentcode::pattern::{Severity, validate};
 use garmentcode::{Align, Arena, Curve, EdgeSeq, Gather, InterfaceId, PanelId, PartExt, Pattern, Rotation, StitchRule, Vec2, Vec3};
 
@@ -115,7 +117,8 @@ fn bodice_block_corner_and_edge_projection() {
     back.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 180.0, 0.0]));
     back.mirror(a);
     back.mirror(a);
-    let back_shoulder = a.interface(back, back.edges(a).iter().copied().find(|&e| a.edge_length(e) == a.geom(cut.leftovers[0]).length()).unwrap());
+    let back_shoulder =
+        a.interface(back, back.edges(a).iter().copied().find(|&e| a.edge_length(e) == a.geom(cut.leftovers[0]).length()).unwrap());
 
     let stitches = vec![
         StitchRule::new(a, iface(a, front, "left"), iface(a, back, "left")).unwrap(),

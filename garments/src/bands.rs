@@ -5,7 +5,7 @@ use crate::common::{register, v2, v3};
 use crate::design::{CuffKind, Design};
 use crate::skirt_paneled::SkirtPanel;
 use garmentcode::math::lerp;
-use garmentcode::{Arena, Body, Component, EdgeSeq, InterfaceId, Node, Part, PanelId, PartExt, Result, StitchRule};
+use garmentcode::{Arena, Body, Component, EdgeSeq, InterfaceId, Node, PanelId, Part, PartExt, Result, StitchRule};
 
 /// A rectangle: waistband, cuff band, turtle-neck band, standing lapel back.
 #[derive(Clone, Debug, Component)]

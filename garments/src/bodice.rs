@@ -68,13 +68,7 @@ impl TorsoPanel {
         }
     }
 
-    fn finish(
-        a: &mut Arena,
-        panel: PanelId,
-        ifaces: [InterfaceId; 6],
-        width: f64,
-        rule: WidthRule,
-    ) -> TorsoPanel {
+    fn finish(a: &mut Arena, panel: PanelId, ifaces: [InterfaceId; 6], width: f64, rule: WidthRule) -> TorsoPanel {
         let [outside, inside, shoulder, bottom, shoulder_corner, collar_corner] = ifaces;
         register(
             a,
@@ -115,7 +109,13 @@ impl TorsoPanel {
         let bottom = a.interface_gathered(panel, edges[0], a.edge_length(edges[0]) / match_to)?;
         let shoulder_corner = a.interface(panel, EdgeSeq(vec![edges.at(-3), edges.at(-2)]));
         let collar_corner = a.interface(panel, EdgeSeq(vec![edges.at(-2), edges.at(-1)]));
-        let t = TorsoPanel::finish(a, panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::SideSlopePlusWidth);
+        let t = TorsoPanel::finish(
+            a,
+            panel,
+            [outside, inside, shoulder, bottom, shoulder_corner, collar_corner],
+            width,
+            WidthRule::SideSlopePlusWidth,
+        );
         panel.translate_by(a, v3(0.0, body.height - body.head_l - length - shoulder_incl, 0.0));
         Ok(t)
     }
@@ -168,7 +168,8 @@ impl TorsoPanel {
         let bottom = a.interface(panel, b_interface);
         let shoulder_corner = a.interface(panel, EdgeSeq(vec![edges.at(-3), edges.at(-2)]));
         let collar_corner = a.interface(panel, EdgeSeq(vec![edges.at(-2), edges.at(-1)]));
-        let t = TorsoPanel::finish(a, panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::SideSlope);
+        let t =
+            TorsoPanel::finish(a, panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::SideSlope);
         panel.translate_by(a, v3(0.0, body.height - body.head_l - max_len - shoulder_incl, 0.0));
         Ok(t)
     }
@@ -200,7 +201,8 @@ impl TorsoPanel {
         let mut bottom = a.interface(panel, edges[0]);
         let shoulder_corner = a.interface(panel, EdgeSeq(vec![edges.at(-3), edges.at(-2)]));
         let collar_corner = a.interface(panel, EdgeSeq(vec![edges.at(-2), edges.at(-1)]));
-        let t = TorsoPanel::finish(a, panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::Constant);
+        let t =
+            TorsoPanel::finish(a, panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::Constant);
         // Darts, when the back waist is narrower than the back (QUIRK: the width is
         // the constant half back width whatever the level).
         if waist < t.get_width(a, body, 0.0) {

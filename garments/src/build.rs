@@ -2,9 +2,9 @@
 //! the one pipeline shared by the command-line tool, the dataset sampler and the web
 //! configurator.
 
-use crate::meta::{MetaGarment, check_param_combinations};
 use crate::Design;
-use garmentcode::{Arena, Body, Component, Pattern, PartExt};
+use crate::meta::{MetaGarment, check_param_combinations};
+use garmentcode::{Arena, Body, Component, PartExt, Pattern};
 use std::fmt;
 
 /// Why a design cannot be built.
@@ -110,7 +110,8 @@ pub fn build_in(arena: &mut Arena, design: &Design, body: &Body, name: &str) -> 
     let self_intersecting = garment.is_self_intersecting(arena);
     let pattern = garment.assemble(arena, name)?;
     let param_combinations = check_param_combinations(design);
-    let checks = Checks { param_combinations, total_length, floor_length, total_length_ok: total_length <= floor_length + 1.0, self_intersecting };
+    let checks =
+        Checks { param_combinations, total_length, floor_length, total_length_ok: total_length <= floor_length + 1.0, self_intersecting };
     Ok(Built { pattern, checks })
 }
 

@@ -1,8 +1,8 @@
 //! Built-in bodies and named designs, embedded in the binary.
 
 use garmentcode::Body;
-use garmentcode::params::read_design;
 use garmentcode::Params;
+use garmentcode::params::read_design;
 
 use crate::Design;
 
@@ -21,7 +21,10 @@ pub const DEFAULT_BODY: &str = "mean_all";
 
 /// A built-in body by name.
 pub fn body(name: &str) -> Option<Body> {
-    BODIES.iter().find(|(n, _)| *n == name).map(|(n, text)| Body::from_yaml(text, &format!("<built-in body {n}>")).expect("built-in bodies are valid"))
+    BODIES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(n, text)| Body::from_yaml(text, &format!("<built-in body {n}>")).expect("built-in bodies are valid"))
 }
 
 /// Names and YAML of the built-in designs (only the values that differ from the
@@ -39,7 +42,8 @@ pub const DEFAULT_DESIGN: &str = "t-shirt";
 
 /// A built-in design by name.
 pub fn design(name: &str) -> Option<Design> {
-    DESIGNS.iter().find(|(n, _)| *n == name).map(|(n, text)| {
-        read_design(text, &format!("<built-in design {n}>"), &Design::design_space()).expect("built-in designs are valid")
-    })
+    DESIGNS
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(n, text)| read_design(text, &format!("<built-in design {n}>"), &Design::design_space()).expect("built-in designs are valid"))
 }

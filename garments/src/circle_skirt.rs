@@ -59,7 +59,13 @@ impl CircleArcPanel {
         Self::interfaces(a, panel, &edges, match_top, match_bottom)
     }
 
-    fn interfaces(a: &mut Arena, panel: PanelId, edges: &EdgeSeq, match_top: Option<f64>, match_bottom: Option<f64>) -> Result<CircleArcPanel> {
+    fn interfaces(
+        a: &mut Arena,
+        panel: PanelId,
+        edges: &EdgeSeq,
+        match_top: Option<f64>,
+        match_bottom: Option<f64>,
+    ) -> Result<CircleArcPanel> {
         let top_ruffle = match_top.map(|m| a.edge_length(edges[0]) / m).unwrap_or(1.0);
         let top = a.interface_gathered(panel, edges[0], top_ruffle)?.reverse(a, true);
         let bottom_ruffle = match_bottom.map(|m| a.edge_length(edges[2]) / m).unwrap_or(1.0);
@@ -72,7 +78,14 @@ impl CircleArcPanel {
     }
 
     /// Sector from its width, top width and fullness (`sun_fraction` of a circle).
-    pub fn from_w_length_suns(a: &mut Arena, name: &str, length: f64, top_width: f64, sun_fraction: f64, match_top: Option<f64>) -> Result<CircleArcPanel> {
+    pub fn from_w_length_suns(
+        a: &mut Arena,
+        name: &str,
+        length: f64,
+        top_width: f64,
+        sun_fraction: f64,
+        match_top: Option<f64>,
+    ) -> Result<CircleArcPanel> {
         let arc = sun_fraction * 2.0 * PI;
         let rad = top_width / arc;
         CircleArcPanel::new(a, name, rad, length, arc, match_top, None)
@@ -118,7 +131,14 @@ pub struct AsymHalfCirclePanel {
 
 impl AsymHalfCirclePanel {
     /// Half circle of radius `top_rad`, `length_f` long at the centre and `length_s` at the sides.
-    pub fn new(a: &mut Arena, name: &str, top_rad: f64, length_f: f64, length_s: f64, match_top: Option<f64>) -> Result<AsymHalfCirclePanel> {
+    pub fn new(
+        a: &mut Arena,
+        name: &str,
+        top_rad: f64,
+        length_f: f64,
+        length_s: f64,
+        match_top: Option<f64>,
+    ) -> Result<AsymHalfCirclePanel> {
         let dist_w = 2.0 * top_rad;
         let dist_out = 2.0 * (top_rad + length_s);
         let p0 = a.vertex(v2(-dist_w / 2.0, 0.0));
@@ -205,9 +225,17 @@ impl SkirtCircle {
         let name = |base: &str| if tag.is_empty() { base.to_string() } else { format!("{base}_{tag}") };
         let waist_level = body.derived().waist_level;
         let (front, back) = if !asymm {
-            let f = CircleArcPanel::from_w_length_suns(a, &name("skirt_front"), length, waist / 2.0, d.suns / 2.0, Some(body.waist - body.waist_back_width))?;
+            let f = CircleArcPanel::from_w_length_suns(
+                a,
+                &name("skirt_front"),
+                length,
+                waist / 2.0,
+                d.suns / 2.0,
+                Some(body.waist - body.waist_back_width),
+            )?;
             f.panel.translate_by(a, v3(0.0, waist_level, 15.0));
-            let b = CircleArcPanel::from_w_length_suns(a, &name("skirt_back"), length, waist / 2.0, d.suns / 2.0, Some(body.waist_back_width))?;
+            let b =
+                CircleArcPanel::from_w_length_suns(a, &name("skirt_back"), length, waist / 2.0, d.suns / 2.0, Some(body.waist_back_width))?;
             b.panel.translate_by(a, v3(0.0, waist_level, -15.0));
             (CirclePanel::Sector(f), CirclePanel::Sector(b))
         } else {

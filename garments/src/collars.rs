@@ -9,7 +9,7 @@ use crate::design::{CollarStyle, NeckShape};
 use crate::shapes::{self, NeckArgs};
 use garmentcode::bezier::Bezier;
 use garmentcode::curves::match_tangents;
-use garmentcode::{Arena, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, Node, Part, PanelId, Result, Rotation, StitchRule};
+use garmentcode::{Arena, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, Node, PanelId, Part, Result, Rotation, StitchRule};
 
 /// The lapel's front piece.
 #[derive(Clone, Debug, Component)]

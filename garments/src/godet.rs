@@ -5,7 +5,7 @@ use crate::design::{Design, GodetBase};
 use crate::skirt_paneled::{PencilSkirt, Skirt2};
 use garmentcode::math::SignumOrZero;
 use garmentcode::ops::{cut_into_edge, distribute_horizontally};
-use garmentcode::{Arena, Body, Component, EdgeId, EdgeSeq, InterfaceId, Node, Part, PanelId, PartExt, Result, StitchRule};
+use garmentcode::{Arena, Body, Component, EdgeId, EdgeSeq, InterfaceId, Node, PanelId, Part, PartExt, Result, StitchRule};
 
 /// A triangular insert, apex up.
 pub fn insert_panel(a: &mut Arena, id: usize, width: f64, depth: f64) -> Result<PanelId> {
@@ -93,7 +93,16 @@ impl GodetSkirt {
         Ok(skirt)
     }
 
-    fn add_inserts(&mut self, a: &mut Arena, bottom_edge: EdgeId, panel: PanelId, ins_w: f64, ins_depth: f64, num: f64, cuts_dist: f64) -> Result<()> {
+    fn add_inserts(
+        &mut self,
+        a: &mut Arena,
+        bottom_edge: EdgeId,
+        panel: PanelId,
+        ins_w: f64,
+        ins_depth: f64,
+        num: f64,
+        cuts_dist: f64,
+    ) -> Result<()> {
         let n = num as usize;
         let bottom_len = a.edge_length(bottom_edge);
         let (lo, hi) = panel.bbox3d(a);

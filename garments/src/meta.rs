@@ -165,8 +165,8 @@ pub fn check_param_combinations(d: &Design) -> std::result::Result<(), &'static 
         return Err("ERROR::IncorrectParams::Skirt2 ruffles + belt");
     }
     let flare_family = |k: BottomKind| matches!(k, BottomKind::SkirtCircle | BottomKind::AsymmSkirtCircle | BottomKind::SkirtManyPanels);
-    let levels_on_flare = lower == BottomKind::SkirtLevels
-        && matches!(d.levels_skirt.base, LevelsBase::SkirtCircle | LevelsBase::AsymmSkirtCircle);
+    let levels_on_flare =
+        lower == BottomKind::SkirtLevels && matches!(d.levels_skirt.base, LevelsBase::SkirtCircle | LevelsBase::AsymmSkirtCircle);
     if (flare_family(lower) || levels_on_flare) && (meta.wb.is_none() || d.waistband.waist > 1.0 || d.waistband.width <= 0.25) {
         let length = if lower == BottomKind::SkirtLevels { d.levels_skirt.length } else { d.flare_skirt.length };
         if length > 0.5 || d.flare_skirt.suns > 0.75 {

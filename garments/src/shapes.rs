@@ -45,11 +45,7 @@ pub fn neckline(a: &mut Arena, shape: NeckShape, depth: f64, width: f64, args: N
         }
         NeckShape::CurvyNeckHalf => {
             let sign = if args.flip { -1.0 } else { 1.0 };
-            let e = a.add_edge(Edge {
-                start: v2(0.0, 0.0),
-                end,
-                curve: Curve::Cubic(v2(0.4, sign * 0.3), v2(0.8, sign * -0.3)),
-            })?;
+            let e = a.add_edge(Edge { start: v2(0.0, 0.0), end, curve: Curve::Cubic(v2(0.4, sign * 0.3), v2(0.8, sign * -0.3)) })?;
             Ok(EdgeSeq(vec![e]))
         }
         NeckShape::CircleArcNeckHalf => {

@@ -85,7 +85,9 @@ impl SkirtLevels {
             LevelsBase::Skirt2 => Stackable::Skirt2(Skirt2::new(a, body, design, "", Some(base_len), Some(rise), false, true)?),
             LevelsBase::PencilSkirt => Stackable::Pencil(PencilSkirt::new(a, body, design, Some(base_len), Some(rise), false)?),
             LevelsBase::SkirtCircle => Stackable::Circle(SkirtCircle::new(a, body, design, "", Some(base_len), Some(rise), false, false)?),
-            LevelsBase::AsymmSkirtCircle => Stackable::Circle(SkirtCircle::new(a, body, design, "", Some(base_len), Some(rise), false, true)?),
+            LevelsBase::AsymmSkirtCircle => {
+                Stackable::Circle(SkirtCircle::new(a, body, design, "", Some(base_len), Some(rise), false, true)?)
+            }
         };
         let angle = match &base {
             Stackable::Pencil(p) => p.low_angle,
@@ -103,8 +105,12 @@ impl SkirtLevels {
             // QUIRK: a tier takes its own `rise` parameter with the overwritten waist.
             let level = match l.level {
                 LevelKind::Skirt2 => Stackable::Skirt2(Skirt2::new(a, &lbody, design, &tag, Some(level_len), None, false, false)?),
-                LevelKind::SkirtCircle => Stackable::Circle(SkirtCircle::new(a, &lbody, design, &tag, Some(level_len), None, false, false)?),
-                LevelKind::AsymmSkirtCircle => Stackable::Circle(SkirtCircle::new(a, &lbody, design, &tag, Some(level_len), None, false, true)?),
+                LevelKind::SkirtCircle => {
+                    Stackable::Circle(SkirtCircle::new(a, &lbody, design, &tag, Some(level_len), None, false, false)?)
+                }
+                LevelKind::AsymmSkirtCircle => {
+                    Stackable::Circle(SkirtCircle::new(a, &lbody, design, &tag, Some(level_len), None, false, true)?)
+                }
             };
             level.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, -angle]));
             let prev_bottom = tiers.last().expect("base").bottom();

@@ -8,8 +8,7 @@ use garmentcode::curves::quadratic_from_tangents;
 use garmentcode::math::close_enough;
 use garmentcode::ops::{DartSize, cut_into_edge, cut_many_into_edge, dart_shape, distribute_y, side_with_cut};
 use garmentcode::{
-    Arena, Body, Component, Curve, EdgeId, EdgeSeq, Gather, InterfaceId, PanelId, Result, Rotation, StitchRule, Vec2,
-    VertexId, Vec3,
+    Arena, Body, Component, Curve, EdgeId, EdgeSeq, Gather, InterfaceId, PanelId, Result, Rotation, StitchRule, Vec2, Vec3, VertexId,
 };
 use std::f64::consts::PI;
 
@@ -192,7 +191,13 @@ pub struct FittedSkirtPanel {
 
 impl FittedSkirtPanel {
     /// Build the panel from the pencil-skirt design and the per-side spec.
-    pub fn new(a: &mut Arena, name: &str, body: &Body, design: &crate::design::PencilSkirt, s: &FittedPanelSpec) -> Result<FittedSkirtPanel> {
+    pub fn new(
+        a: &mut Arena,
+        name: &str,
+        body: &Body,
+        design: &crate::design::PencilSkirt,
+        s: &FittedPanelSpec,
+    ) -> Result<FittedSkirtPanel> {
         let d = body.derived();
         let low_angle = design.low_angle as f64;
         let hip_side_incl = d.hip_inclination.to_radians();
@@ -210,11 +215,8 @@ impl FittedSkirtPanel {
         let straight = close_enough(flare, 1.0, 1e-4);
         let p0 = a.vertex(v2(s.hips - low_width, angle_shift));
         let p1 = a.vertex(v2(0.0, s.length));
-        let mut right_bottom = if straight {
-            a.edge(p0, p1, Curve::Line)?
-        } else {
-            tangent_curve(a, p0, p1, None, Some(v2(0.0, 1.0)), v2(0.75, 0.0))?
-        };
+        let mut right_bottom =
+            if straight { a.edge(p0, p1, Curve::Line)? } else { tangent_curve(a, p0, p1, None, Some(v2(0.0, 1.0)), v2(0.75, 0.0))? };
         let p2 = a.vertex(v2(hw_shift, s.length + adj_hips_depth));
         let right_top = tangent_curve(a, p1, p2, Some(v2(0.0, 1.0)), None, v2(0.5, 0.0))?;
         let mut right = EdgeSeq(vec![right_bottom, right_top]);
@@ -223,11 +225,8 @@ impl FittedSkirtPanel {
         let p4 = a.vertex(v2(s.hips * 2.0, s.length));
         let left_top = tangent_curve(a, p3, p4, None, Some(v2(0.0, -1.0)), v2(0.5, 0.0))?;
         let p5 = a.vertex(v2(s.hips + low_width, -angle_shift));
-        let mut left_bottom = if straight {
-            a.edge(p4, p5, Curve::Line)?
-        } else {
-            tangent_curve(a, p4, p5, Some(v2(0.0, -1.0)), None, v2(0.25, 0.0))?
-        };
+        let mut left_bottom =
+            if straight { a.edge(p4, p5, Curve::Line)? } else { tangent_curve(a, p4, p5, Some(v2(0.0, -1.0)), None, v2(0.25, 0.0))? };
         let mut left = EdgeSeq(vec![left_top, left_bottom]);
         let mut edges = EdgeSeq(vec![right_bottom, right_top, top, left_top, left_bottom]);
         edges.close_loop(a)?;
@@ -553,7 +552,16 @@ impl Skirt2 {
         let bottom_cut = if slit { d.bottom_cut * d.length } else { 0.0 };
         let waist_level = body.derived().waist_level;
         let flare = d.flare as f64;
-        let front = SkirtPanel::new(a, &name("skirt_front"), waist - back_waist, length, ruffles, Some(body.waist - body.waist_back_width), bottom_cut, flare)?;
+        let front = SkirtPanel::new(
+            a,
+            &name("skirt_front"),
+            waist - back_waist,
+            length,
+            ruffles,
+            Some(body.waist - body.waist_back_width),
+            bottom_cut,
+            flare,
+        )?;
         front.panel.translate_to(a, v3(0.0, waist_level, 25.0));
         let back = SkirtPanel::new(a, &name("skirt_back"), back_waist, length, ruffles, Some(body.waist_back_width), bottom_cut, flare)?;
         back.panel.translate_to(a, v3(0.0, waist_level, -20.0));

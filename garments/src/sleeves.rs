@@ -118,7 +118,15 @@ impl Sleeve {
     /// torso panels `front_w` and `back_w` wide at that depth: the sleeve before its
     /// panels ([`Sleeve::add_panels`] builds them), so that the torso can be cut and
     /// checked before the costly sleeve-opening inversion.
-    pub fn armholes(a: &mut Arena, tag: &str, body: &Body, s: &SleeveParams, connecting_width: f64, front_w: f64, back_w: f64) -> Result<Sleeve> {
+    pub fn armholes(
+        a: &mut Arena,
+        tag: &str,
+        body: &Body,
+        s: &SleeveParams,
+        connecting_width: f64,
+        front_w: f64,
+        back_w: f64,
+    ) -> Result<Sleeve> {
         let sleeve_balance = body.derived().base_sleeve_balance / 2.0;
         let sc = s.smoothing_coeff;
         let mut shape = |incl: f64| match s.armhole_shape {
@@ -144,7 +152,16 @@ impl Sleeve {
 
     /// Build the sleeve panels (and cuff) of a sleeve made by [`Sleeve::armholes`]
     /// with the same arguments; nothing for a sleeveless side.
-    pub fn add_panels(&mut self, a: &mut Arena, tag: &str, body: &Body, s: &SleeveParams, connecting_width: f64, front_w: f64, back_w: f64) -> Result<()> {
+    pub fn add_panels(
+        &mut self,
+        a: &mut Arena,
+        tag: &str,
+        body: &Body,
+        s: &SleeveParams,
+        connecting_width: f64,
+        front_w: f64,
+        back_w: f64,
+    ) -> Result<()> {
         if s.sleeveless {
             return Ok(());
         }

@@ -2,9 +2,9 @@
 //! path, type, range or options, default and probability (figures from the
 //! reference's `default.yaml`, 122 parameters, in document order).
 
+use garmentcode::Params;
 use garmentcode::params::{Kind, Range, Value};
 use garments::Design;
-use garmentcode::Params;
 
 #[derive(Debug)]
 enum V {
@@ -164,7 +164,10 @@ fn design_space_equals_the_reference_default_design() {
         assert_eq!(p.kind, Kind::parse(ty).unwrap(), "{path}: type");
         match &p.range {
             Range::Numeric { lo, hi } => {
-                assert!(range.len() == 2 && same(&range[0], &Value::Float(*lo)) && same(&range[1], &Value::Float(*hi)), "{path}: range {range:?} vs [{lo}, {hi}]")
+                assert!(
+                    range.len() == 2 && same(&range[0], &Value::Float(*lo)) && same(&range[1], &Value::Float(*hi)),
+                    "{path}: range {range:?} vs [{lo}, {hi}]"
+                )
             }
             Range::Options(opts) => {
                 assert_eq!(opts.len(), range.len(), "{path}: options {range:?} vs {opts:?}");

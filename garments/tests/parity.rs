@@ -45,7 +45,8 @@ fn judge(case: &Path, space: &garmentcode::DesignSpace, arena: &mut Arena, chaot
         match result {
             Ok(_) => problems.push(format!("built, but the reference rejects it: {}", reason.lines().next().unwrap_or(""))),
             Err(BuildError::Empty) if reason.contains("empty pattern") => {}
-            Err(BuildError::Geometry(garmentcode::Error::DegenerateEdge { .. })) if reason.contains("Start and end of an edge should differ") => {}
+            Err(BuildError::Geometry(garmentcode::Error::DegenerateEdge { .. }))
+                if reason.contains("Start and end of an edge should differ") => {}
             Err(e) => problems.push(format!("rejected for another reason: ours '{e}', the reference's '{}'", reason.trim())),
         }
         return problems;

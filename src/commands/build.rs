@@ -3,8 +3,8 @@
 use crate::args::{Args, UsageError};
 use crate::commands::{CliError, load_body, load_design};
 use crate::output::OutputSet;
-use garmentcode::params::write_design;
 use garmentcode::Params;
+use garmentcode::params::write_design;
 use garments::Design;
 use garments::build::build;
 use std::path::PathBuf;
@@ -30,7 +30,10 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
         eprintln!("warning: {w}");
     }
     if strict && !warnings.is_empty() {
-        return Err(CliError::Rejected(format!("{design_label} on {body_label}: rejected by --strict ({} failed check(s)); nothing written", warnings.len())));
+        return Err(CliError::Rejected(format!(
+            "{design_label} on {body_label}: rejected by --strict ({} failed check(s)); nothing written",
+            warnings.len()
+        )));
     }
     let mut set = OutputSet::default();
     set.add("specification.json", built.pattern.to_json().map_err(|e| CliError::Input(e.to_string()))?);

@@ -18,7 +18,15 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
         "table" => {
             for p in space.params() {
                 let prob = p.default_prob.map(|x| x.to_string()).unwrap_or_else(|| "-".into());
-                outln!("{:<45} {:<11} {:<40} default {:<14} p {:<4} {}", p.path, p.kind.as_str(), p.range.to_string(), p.default.to_string(), prob, p.description);
+                outln!(
+                    "{:<45} {:<11} {:<40} default {:<14} p {:<4} {}",
+                    p.path,
+                    p.kind.as_str(),
+                    p.range.to_string(),
+                    p.default.to_string(),
+                    prob,
+                    p.description
+                );
             }
         }
         other => return Err(UsageError(format!("schema --format: expected reference-yaml, json-schema or table, got '{other}'")).into()),

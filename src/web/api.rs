@@ -20,9 +20,9 @@ use std::cell::RefCell;
 use std::sync::OnceLock;
 
 use garmentcode::params::{DesignError, Kind, ParamSpec, Range, Value as PValue, from_values, read_design_values, write_design};
-use garments::sample::{DatasetSampler, NamedBody, Outcome};
 use garmentcode::{Arena, Body, DesignSpace, Params};
 use garments::Design;
+use garments::sample::{DatasetSampler, NamedBody, Outcome};
 use serde_json::{Map, Value as Json, json};
 
 use super::http::{Request, Response};
@@ -119,7 +119,11 @@ fn route_inner(req: &Request) -> Response {
     };
     // Static page.
     if let Some(asset) = super::assets::get(path) {
-        return if get { Response { status: 200, content_type: asset.content_type, headers: Vec::new(), body: asset.body.as_bytes().to_vec() } } else { allow("GET, HEAD") };
+        return if get {
+            Response { status: 200, content_type: asset.content_type, headers: Vec::new(), body: asset.body.as_bytes().to_vec() }
+        } else {
+            allow("GET, HEAD")
+        };
     }
     let Some(api) = path.strip_prefix("/api") else {
         return error_response(&ApiError::new(404, format!("no such page: {path} (the configurator is at /, the API at /api)")));
@@ -284,7 +288,8 @@ fn design_error(e: DesignError) -> ApiError {
 /// A close parameter path for a typo, as design files get.
 fn hint(path: &str) -> String {
     let last = path.rsplit('.').next().unwrap_or(path);
-    let close: Vec<&str> = space().params().iter().map(|p| p.path.as_str()).filter(|p| p.ends_with(&format!(".{last}")) || *p == last).take(3).collect();
+    let close: Vec<&str> =
+        space().params().iter().map(|p| p.path.as_str()).filter(|p| p.ends_with(&format!(".{last}")) || *p == last).take(3).collect();
     if close.is_empty() { String::new() } else { format!(" (did you mean {}?)", close.join(", ")) }
 }
 
@@ -324,7 +329,8 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
                 if map.contains_key("measurements") || map.contains_key("base") {
                     return Err(ApiError::bad("body: give either yaml or base and measurements, not both"));
                 }
-                let b = Body::from_yaml(text, "body").map_err(|e| ApiError::from_problems(e.problems.iter().map(|p| format!("body: {p}")).collect()))?;
+                let b = Body::from_yaml(text, "body")
+                    .map_err(|e| ApiError::from_problems(e.problems.iter().map(|p| format!("body: {p}")).collect()))?;
                 return Ok((label, b));
             }
             let base = match map.get("base") {
@@ -357,7 +363,8 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
                         }
                     }
                 }
-                Some(other) => problems.push(format!("body.measurements must be an object of measurement names and numbers, not a JSON {}", json_type(other))),
+                Some(other) => problems
+                    .push(format!("body.measurements must be an object of measurement names and numbers, not a JSON {}", json_type(other))),
             }
             if problems.is_empty() {
                 let label = if map.contains_key("measurements") { label } else { base.to_string() };
@@ -376,7 +383,8 @@ pub fn body_json(name: &str, b: &Body) -> Json {
     for n in Body::measurement_names() {
         measurements.insert(n.to_string(), b.get(n).and_then(serde_json::Number::from_f64).map(Json::Number).unwrap_or(Json::Null));
     }
-    let derived: Map<String, Json> = b.entries().into_iter().filter(|(n, _)| n.starts_with('_')).map(|(n, v)| (n.to_string(), json!(v))).collect();
+    let derived: Map<String, Json> =
+        b.entries().into_iter().filter(|(n, _)| n.starts_with('_')).map(|(n, v)| (n.to_string(), json!(v))).collect();
     json!({ "name": name, "measurements": measurements, "derived": derived })
 }
 
@@ -389,7 +397,11 @@ fn pattern_name(input: &Json) -> ApiResult<String> {
                 && s.len() <= MAX_NAME
                 && !s.starts_with('.')
                 && s.chars().all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c));
-            if ok { Ok(s.clone()) } else { Err(ApiError::bad(format!("name: expected 1 to {MAX_NAME} letters, digits, '-', '_' or '.', got {s:?}"))) }
+            if ok {
+                Ok(s.clone())
+            } else {
+                Err(ApiError::bad(format!("name: expected 1 to {MAX_NAME} letters, digits, '-', '_' or '.', got {s:?}")))
+            }
         }
         Some(other) => Err(ApiError::bad(format!("name must be a string, not a JSON {}", json_type(other)))),
     }
@@ -465,7 +477,13 @@ pub fn schema() -> Json {
         .collect();
     let neutral = builtin_bodies().first().map(|(_, b)| b.clone());
     let derived: Vec<Json> = neutral
-        .map(|b| b.entries().into_iter().filter(|(n, _)| n.starts_with('_')).map(|(n, _)| json!({ "name": n, "description": Body::describe_measurement(n).unwrap_or("") })).collect())
+        .map(|b| {
+            b.entries()
+                .into_iter()
+                .filter(|(n, _)| n.starts_with('_'))
+                .map(|(n, _)| json!({ "name": n, "description": Body::describe_measurement(n).unwrap_or("") }))
+                .collect()
+        })
         .unwrap_or_default();
     json!({
         "groups": groups,
@@ -553,7 +571,8 @@ fn evaluate(input: &Json) -> ApiResult<Evaluation> {
 
 fn build(design: &Design, body: &Body, name: &str, layout: garmentcode::draw::Layout) -> Result<Output, String> {
     let built = ARENA.with(|a| garments::build::build_in(&mut a.borrow_mut(), design, body, name)).map_err(|e| e.to_string())?;
-    let svg = garmentcode::draw::to_svg(&built.pattern, &garmentcode::draw::DrawOptions { layout, ..Default::default() }).map_err(|e| format!("the pattern cannot be drawn: {e}"))?;
+    let svg = garmentcode::draw::to_svg(&built.pattern, &garmentcode::draw::DrawOptions { layout, ..Default::default() })
+        .map_err(|e| format!("the pattern cannot be drawn: {e}"))?;
     let spec = built.pattern.to_json().map_err(|e| format!("the pattern cannot be written: {e}"))?;
     Ok(Output {
         svg,

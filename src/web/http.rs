@@ -345,7 +345,10 @@ mod tests {
 
     #[test]
     fn continue_is_sent_when_asked() {
-        let mut m = Mem { input: Cursor::new(b"POST / HTTP/1.1\r\nExpect: 100-continue\r\nContent-Length: 2\r\n\r\n".to_vec()), output: Vec::new() };
+        let mut m = Mem {
+            input: Cursor::new(b"POST / HTTP/1.1\r\nExpect: 100-continue\r\nContent-Length: 2\r\n\r\n".to_vec()),
+            output: Vec::new(),
+        };
         // The body never comes: the request fails, but the client was told to send it.
         assert!(read_request(&mut m, &Limits::default()).is_err());
         assert!(m.output.starts_with(b"HTTP/1.1 100 Continue"));

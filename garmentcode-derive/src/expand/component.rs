@@ -28,11 +28,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         .iter()
         .map(|i| {
             let (f, n) = (&i.ident, &i.name);
-            if i.optional {
-                quote!(#n => self.#f)
-            } else {
-                quote!(#n => ::std::option::Option::Some(self.#f))
-            }
+            if i.optional { quote!(#n => self.#f) } else { quote!(#n => ::std::option::Option::Some(self.#f)) }
         })
         .collect();
     let slots: Vec<TokenStream> = model

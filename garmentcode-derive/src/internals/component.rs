@@ -134,15 +134,13 @@ pub fn parse(input: &DeriveInput) -> Result<ComponentStruct, syn::Error> {
                 }
                 let optional = match last_ident(&f.ty) {
                     Some((i, _)) if i == "InterfaceId" => false,
-                    Some((i, PathArguments::AngleBracketed(args))) if i == "Option" => {
-                        match args.args.first() {
-                            Some(GenericArgument::Type(inner)) if last_ident(inner).map(|(i, _)| i == "InterfaceId").unwrap_or(false) => true,
-                            _ => {
-                                errors.at(f.ty.span(), "an #[interface] field must be an InterfaceId or Option<InterfaceId>");
-                                false
-                            }
+                    Some((i, PathArguments::AngleBracketed(args))) if i == "Option" => match args.args.first() {
+                        Some(GenericArgument::Type(inner)) if last_ident(inner).map(|(i, _)| i == "InterfaceId").unwrap_or(false) => true,
+                        _ => {
+                            errors.at(f.ty.span(), "an #[interface] field must be an InterfaceId or Option<InterfaceId>");
+                            false
                         }
-                    }
+                    },
                     _ => {
                         errors.at(f.ty.span(), "an #[interface] field must be an InterfaceId or Option<InterfaceId>");
                         false

@@ -159,7 +159,10 @@ fn classify(ty: &Type) -> Result<LeafType, String> {
 pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
     let mut errors = Errors::default();
     let Data::Struct(data) = &input.data else {
-        return Err(syn::Error::new(input.ident.span(), "#[derive(Params)] expects a struct with named fields; use #[derive(Choice)] for enums"));
+        return Err(syn::Error::new(
+            input.ident.span(),
+            "#[derive(Params)] expects a struct with named fields; use #[derive(Choice)] for enums",
+        ));
     };
     let Fields::Named(named) = &data.fields else {
         return Err(syn::Error::new(input.ident.span(), "#[derive(Params)] expects a struct with named fields"));

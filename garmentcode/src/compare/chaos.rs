@@ -3,12 +3,12 @@
 //! are judged by what makes the garment sew, with limits that grow with how far the
 //! group's fitted seam curves moved (fit_dev).
 
+use super::ChaosParams;
 use super::dist::{fast_pointwise, hausdorff, lift};
+use super::geom::dist2;
 use super::geom::{EdgeGeom, PanelGeom};
 use super::py::{self, PyErr};
-use super::geom::dist2;
 use super::stitch::{Side, Stitch, flags_repr, stitch_str};
-use super::ChaosParams;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 /// `CHAOTIC_PANEL_RE`: {right,left}_sleeve_{f,b}, {right,left}_hood,
@@ -77,11 +77,7 @@ pub fn cyclic_types_match(pe: &PanelGeom, pa: &PanelGeom, sliver: f64) -> bool {
 }
 
 fn types_str(p: &PanelGeom, sliver: f64) -> String {
-    let parts: Vec<String> = p
-        .edges
-        .iter()
-        .map(|e| format!("{}{}", e.kind.name(), if e.length() <= sliver { "*" } else { "" }))
-        .collect();
+    let parts: Vec<String> = p.edges.iter().map(|e| format!("{}{}", e.kind.name(), if e.length() <= sliver { "*" } else { "" })).collect();
     format!("[{}]", parts.join(" "))
 }
 
@@ -132,11 +128,7 @@ pub fn compare_chaotic_panel(
     }
     let sliver = cp.sliver_len;
     if !cyclic_types_match(pe, pa, sliver) {
-        reasons.push(format!(
-            "chaotic panel {name}: edge types {} vs expected {}",
-            types_str(pa, sliver),
-            types_str(pe, sliver)
-        ));
+        reasons.push(format!("chaotic panel {name}: edge types {} vs expected {}", types_str(pa, sliver), types_str(pe, sliver)));
     } else if pe.n_vertices as i64 - pe.edges.len() as i64 != pa.n_vertices as i64 - pa.edges.len() as i64 {
         reasons.push(format!(
             "chaotic panel {name}: {} vertices for {} edges vs expected {} for {}",
@@ -330,18 +322,10 @@ fn match_pair<'s, 'a>(
         })
         .collect();
     // big = max([finite costs] + [1.0]) * 10 + 1e6 (Python's max keeps the first maximum)
-    let big = costs
-        .iter()
-        .flatten()
-        .copied()
-        .filter(|x| *x != f64::INFINITY)
-        .chain(std::iter::once(1.0))
-        .reduce(py::max)
-        .unwrap_or(1.0)
+    let big = costs.iter().flatten().copied().filter(|x| *x != f64::INFINITY).chain(std::iter::once(1.0)).reduce(py::max).unwrap_or(1.0)
         * 10.0
         + 1e6;
-    let capped: Vec<Vec<f64>> =
-        costs.iter().map(|row| row.iter().map(|&x| if x != f64::INFINITY { x } else { big }).collect()).collect();
+    let capped: Vec<Vec<f64>> = costs.iter().map(|row| row.iter().map(|&x| if x != f64::INFINITY { x } else { big }).collect()).collect();
     let col = assign(&capped);
     let mut matched = Vec::new();
     let (mut used_r, mut used_c) = (vec![false; rows.len()], vec![false; cols.len()]);
@@ -483,25 +467,14 @@ pub fn compare_chaotic_stitches(
             let ra = py::div(oas[0].len, oas[1].len)?;
             let bad: Vec<String> = (0..2)
                 .filter(|&i| side_devs[i] > lims[i])
-                .map(|i| {
-                    format!(
-                        "{} side off by {} cm (> {} cm)",
-                        oes[i].panel,
-                        py::fixed(side_devs[i], 4),
-                        py::fixed(lims[i], 4)
-                    )
-                })
+                .map(|i| format!("{} side off by {} cm (> {} cm)", oes[i].panel, py::fixed(side_devs[i], 4), py::fixed(lims[i], 4)))
                 .collect();
             if !bad.is_empty() {
                 reasons.push(format!("stitch {}: closest actual stitch: {}", stitch_str(m.e), bad.join(", ")));
                 continue;
             }
             if m.a.flags != m.e.flags {
-                reasons.push(format!(
-                    "stitch {pair}: flags {} vs expected {}",
-                    flags_repr(&m.a.flags),
-                    flags_repr(&m.e.flags)
-                ));
+                reasons.push(format!("stitch {pair}: flags {} vs expected {}", flags_repr(&m.a.flags), flags_repr(&m.e.flags)));
             }
             if !sl && (py::div(ra, re)? - 1.0).abs() > cp.ratio_tol {
                 reasons.push(format!(
@@ -562,13 +535,7 @@ pub fn compare_chaotic_stitches(
     for k in tkeys {
         let (te, ta) = (gtot_e.get(&k).copied().unwrap_or(0.0), gtot_a.get(&k).copied().unwrap_or(0.0));
         if (ta - te).abs() > tol {
-            reasons.push(format!(
-                "length of {} stitched to {}: {} vs expected {} cm",
-                k.0,
-                k.1,
-                py::fixed(ta, 4),
-                py::fixed(te, 4)
-            ));
+            reasons.push(format!("length of {} stitched to {}: {} vs expected {} cm", k.0, k.1, py::fixed(ta, 4), py::fixed(te, 4)));
         }
     }
     for (g, [ge, ne]) in &seam_e {

@@ -19,11 +19,7 @@ fn seg_dist(p: P3, a: P3, b: P3) -> f64 {
     let ab = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
     let ap = [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
     let den = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
-    let t = if den == 0.0 {
-        0.0
-    } else {
-        py::max(0.0, py::min(1.0, (ab[0] * ap[0] + ab[1] * ap[1] + ab[2] * ap[2]) / den))
-    };
+    let t = if den == 0.0 { 0.0 } else { py::max(0.0, py::min(1.0, (ab[0] * ap[0] + ab[1] * ap[1] + ab[2] * ap[2]) / den)) };
     (py::sq(ap[0] - t * ab[0]) + py::sq(ap[1] - t * ab[1]) + py::sq(ap[2] - t * ab[2])).sqrt()
 }
 
@@ -104,12 +100,7 @@ impl SegGrid {
     }
 }
 
-fn directed<'a>(
-    points: impl Iterator<Item = &'a P3>,
-    grid: &SegGrid,
-    max_far: Option<usize>,
-    stop_above: Option<f64>,
-) -> f64 {
+fn directed<'a>(points: impl Iterator<Item = &'a P3>, grid: &SegGrid, max_far: Option<usize>, stop_above: Option<f64>) -> f64 {
     let mut worst = 0.0;
     let mut far = 0;
     for &p in points {

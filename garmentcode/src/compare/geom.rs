@@ -57,19 +57,13 @@ impl EdgeGeom {
             Kind::Quadratic => {
                 let c = self.ctrl[0];
                 let u = 1.0 - t;
-                [
-                    u * u * s[0] + 2.0 * u * t * c[0] + t * t * e[0],
-                    u * u * s[1] + 2.0 * u * t * c[1] + t * t * e[1],
-                ]
+                [u * u * s[0] + 2.0 * u * t * c[0] + t * t * e[0], u * u * s[1] + 2.0 * u * t * c[1] + t * t * e[1]]
             }
             Kind::Cubic => {
                 let (c1, c2) = (self.ctrl[0], self.ctrl[1]);
                 let u = 1.0 - t;
                 let (a, b, c, d) = (u * u * u, 3.0 * u * u * t, 3.0 * u * t * t, t * t * t);
-                [
-                    a * s[0] + b * c1[0] + c * c2[0] + d * e[0],
-                    a * s[1] + b * c1[1] + c * c2[1] + d * e[1],
-                ]
+                [a * s[0] + b * c1[0] + c * c2[0] + d * e[0], a * s[1] + b * c1[1] + c * c2[1] + d * e[1]]
             }
             Kind::Circle => {
                 if t <= 0.0 {
@@ -117,10 +111,7 @@ impl EdgeGeom {
                 for i in 0..n {
                     if cum[i + 1] >= half {
                         let f = if cum[i + 1] == cum[i] { 0.0 } else { (half - cum[i]) / (cum[i + 1] - cum[i]) };
-                        return [
-                            pts[i][0] + f * (pts[i + 1][0] - pts[i][0]),
-                            pts[i][1] + f * (pts[i + 1][1] - pts[i][1]),
-                        ];
+                        return [pts[i][0] + f * (pts[i + 1][0] - pts[i][0]), pts[i][1] + f * (pts[i + 1][1] - pts[i][1])];
                     }
                 }
                 pts[n]
@@ -200,15 +191,12 @@ impl From<PyErr> for EdgeFail {
 /// (negative indices count from the end; bools are ints).
 fn py_index(n: usize, idx: &Value) -> Result<usize, PyErr> {
     let i = match idx {
-        Value::Number(n) if n.is_i64() || n.is_u64() => n.as_i64().ok_or_else(|| {
-            PyErr::new("IndexError", "cannot fit 'int' into an index-sized integer")
-        })?,
+        Value::Number(n) if n.is_i64() || n.is_u64() => {
+            n.as_i64().ok_or_else(|| PyErr::new("IndexError", "cannot fit 'int' into an index-sized integer"))?
+        }
         Value::Bool(b) => *b as i64,
         other => {
-            return Err(PyErr::new(
-                "TypeError",
-                format!("list indices must be integers or slices, not {}", py::type_name(other)),
-            ));
+            return Err(PyErr::new("TypeError", format!("list indices must be integers or slices, not {}", py::type_name(other))));
         }
     };
     let n = n as i64;
@@ -244,9 +232,7 @@ fn xy(v: &Value) -> Result<P2, PyErr> {
 fn make_edge(verts: &[P2], edge: &Value, absolute: bool, radius_scale: f64) -> Result<EdgeGeom, EdgeFail> {
     // i, j = edge['endpoints']; s, e = float(verts[i][0..2])
     let ends = (|| -> Result<(P2, P2), PyErr> {
-        let obj = edge.as_object().ok_or_else(|| {
-            PyErr::new("TypeError", format!("{} indices must be integers", py::type_name(edge)))
-        })?;
+        let obj = edge.as_object().ok_or_else(|| PyErr::new("TypeError", format!("{} indices must be integers", py::type_name(edge))))?;
         let ep = obj.get("endpoints").ok_or_else(|| PyErr::new("KeyError", "'endpoints'"))?;
         let pair = match ep {
             Value::Array(a) if a.len() == 2 => a,
@@ -271,10 +257,7 @@ fn make_edge(verts: &[P2], edge: &Value, absolute: bool, radius_scale: f64) -> R
         Err(ex) => {
             let Some(obj) = edge.as_object() else {
                 // the script's error message calls edge.get(), which a non-dict lacks
-                return Err(EdgeFail::Py(PyErr::new(
-                    "AttributeError",
-                    format!("'{}' object has no attribute 'get'", py::type_name(edge)),
-                )));
+                return Err(EdgeFail::Py(PyErr::new("AttributeError", format!("'{}' object has no attribute 'get'", py::type_name(edge)))));
             };
             let ep = obj.get("endpoints").map(py::repr).unwrap_or_else(|| "None".into());
             return Err(EdgeFail::Spec(format!("bad edge endpoints {ep}: {}", ex.msg)));
@@ -294,10 +277,7 @@ fn make_edge(verts: &[P2], edge: &Value, absolute: bool, radius_scale: f64) -> R
         return Ok(EdgeGeom::new(Kind::Quadratic, s, e, vec![cp(curv)?], None));
     }
     let Value::Object(c) = curv else {
-        return Err(EdgeFail::Py(PyErr::new(
-            "AttributeError",
-            format!("'{}' object has no attribute 'get'", py::type_name(curv)),
-        )));
+        return Err(EdgeFail::Py(PyErr::new("AttributeError", format!("'{}' object has no attribute 'get'", py::type_name(curv)))));
     };
     let ctype = c.get("type").cloned().unwrap_or(Value::Null);
     let params = c.get("params").cloned().unwrap_or(Value::Null);
@@ -316,10 +296,7 @@ fn make_edge(verts: &[P2], edge: &Value, absolute: bool, radius_scale: f64) -> R
                 Value::Object(o) => o.len(),
                 Value::String(st) => st.chars().count(),
                 other => {
-                    return Err(EdgeFail::Py(PyErr::new(
-                        "TypeError",
-                        format!("object of type '{}' has no len()", py::type_name(other)),
-                    )));
+                    return Err(EdgeFail::Py(PyErr::new("TypeError", format!("object of type '{}' has no len()", py::type_name(other)))));
                 }
             };
             if n != 2 {
@@ -329,10 +306,7 @@ fn make_edge(verts: &[P2], edge: &Value, absolute: bool, radius_scale: f64) -> R
         }
         Some("circle") => {
             let Value::Array(a) = &params else {
-                return Err(EdgeFail::Py(PyErr::new(
-                    "TypeError",
-                    format!("cannot unpack non-iterable {} object", py::type_name(&params)),
-                )));
+                return Err(EdgeFail::Py(PyErr::new("TypeError", format!("cannot unpack non-iterable {} object", py::type_name(&params)))));
             };
             if a.len() != 3 {
                 return Err(EdgeFail::Py(PyErr::new(
@@ -493,11 +467,7 @@ impl PanelGeom {
 
     pub fn to3d(&self, p: P2) -> P3 {
         let (r, t) = (&self.r, &self.translation);
-        [
-            r[0][0] * p[0] + r[0][1] * p[1] + t[0],
-            r[1][0] * p[0] + r[1][1] * p[1] + t[1],
-            r[2][0] * p[0] + r[2][1] * p[1] + t[2],
-        ]
+        [r[0][0] * p[0] + r[0][1] * p[1] + t[0], r[1][0] * p[0] + r[1][1] * p[1] + t[1], r[2][0] * p[0] + r[2][1] * p[1] + t[2]]
     }
 
     pub fn perimeter(&self) -> f64 {

@@ -67,14 +67,7 @@ pub struct ChaosParams {
 
 impl Default for ChaosParams {
     fn default() -> Self {
-        ChaosParams {
-            fit_gain: 3.5,
-            outline_tol: 2.8,
-            stitch_tol: 3.3,
-            ratio_tol: 0.065,
-            seam_ratio_tol: 0.0025,
-            sliver_len: 1.0,
-        }
+        ChaosParams { fit_gain: 3.5, outline_tol: 2.8, stitch_tol: 3.3, ratio_tol: 0.065, seam_ratio_tol: 0.0025, sliver_len: 1.0 }
     }
 }
 
@@ -163,11 +156,7 @@ impl Verdict {
         };
         let mut line = format!("{tag} {name} max_dev={dtxt}");
         if self.chaotic {
-            line += &format!(
-                " (chaotic rule: {} panels, chaotic max_dev={})",
-                self.chaotic_panels,
-                py::fixed(self.chaos_dev, 4)
-            );
+            line += &format!(" (chaotic rule: {} panels, chaotic max_dev={})", self.chaotic_panels, py::fixed(self.chaos_dev, 4));
         }
         if !self.reasons.is_empty() {
             // reasons[:max_reasons] with Python's slice semantics
@@ -268,10 +257,7 @@ fn load_spec<'v>(src: &'v Source, which: &str, euler: Euler) -> Result<(&'v Valu
         _ => Value::Object(Default::default()),
     };
     let Value::Object(props) = props else {
-        return Err(Fail::Py(PyErr::new(
-            "AttributeError",
-            format!("'{}' object has no attribute 'get'", py::type_name(&props)),
-        )));
+        return Err(Fail::Py(PyErr::new("AttributeError", format!("'{}' object has no attribute 'get'", py::type_name(&props)))));
     };
     let units = match props.get("units_in_meter") {
         Some(u) => py::float(u)?,
@@ -280,10 +266,7 @@ fn load_spec<'v>(src: &'v Source, which: &str, euler: Euler) -> Result<(&'v Valu
     let scale = py::div(100.0, units)?;
     let absolute = props.get("curvature_coords").is_some_and(|c| c.as_str() == Some("absolute"));
     let Value::Object(pm) = panels_v else {
-        return Err(Fail::Py(PyErr::new(
-            "AttributeError",
-            format!("'{}' object has no attribute 'items'", py::type_name(panels_v)),
-        )));
+        return Err(Fail::Py(PyErr::new("AttributeError", format!("'{}' object has no attribute 'items'", py::type_name(panels_v)))));
     };
     let mut panels = BTreeMap::new();
     for (name, pdata) in pm {
@@ -359,11 +342,7 @@ fn compare_panel(
         reasons.push(format!("panel {name}: 3D outline deviates by {} cm", py::fixed(d3, 4)));
     }
     if per > tol {
-        reasons.push(format!(
-            "panel {name}: perimeter {} vs expected {}",
-            py::fixed(pa.perimeter(), 4),
-            py::fixed(pe.perimeter(), 4)
-        ));
+        reasons.push(format!("panel {name}: perimeter {} vs expected {}", py::fixed(pa.perimeter(), 4), py::fixed(pe.perimeter(), 4)));
     }
     orientation_and_label(name, pe, pa, strict, &mut reasons, &mut notes);
     (reasons, notes, py::max(py::max(d2, d3), per))
@@ -484,11 +463,7 @@ pub fn compare_spec_files(expected: &Path, actual: &Path, opts: &CompareOptions)
 }
 
 /// Compare the runtime's patterns (serialised as the reference writes them).
-pub fn compare_runtime_patterns(
-    expected: &crate::pattern::Pattern,
-    actual: &crate::pattern::Pattern,
-    opts: &CompareOptions,
-) -> Verdict {
+pub fn compare_runtime_patterns(expected: &crate::pattern::Pattern, actual: &crate::pattern::Pattern, opts: &CompareOptions) -> Verdict {
     let text = |p: &crate::pattern::Pattern, which: &str| match p.to_json() {
         Ok(t) => t,
         Err(e) => format!("{{\"unserialisable {which} pattern\": {}}}", serde_json::Value::String(e.to_string())),
@@ -541,11 +516,7 @@ pub fn compare_case(exp_dir: &Path, act_dir: &Path, opts: &CompareOptions) -> Ve
 /// `--cases`: every sub-directory of `expected_dir` holding a specification.json or an
 /// error.txt is a case, compared with the directory of the same name in `actual_dir`.
 /// Cases are in sorted order.
-pub fn compare_case_dirs(
-    expected_dir: &Path,
-    actual_dir: &Path,
-    opts: &CompareOptions,
-) -> Result<Vec<(String, Verdict)>, String> {
+pub fn compare_case_dirs(expected_dir: &Path, actual_dir: &Path, opts: &CompareOptions) -> Result<Vec<(String, Verdict)>, String> {
     if !expected_dir.is_dir() {
         return Err(format!("expected directory not found: {}", expected_dir.display()));
     }

@@ -67,11 +67,7 @@ pub fn sq(x: f64) -> f64 {
 /// `a % b` on floats: the result takes the sign of the divisor.
 pub fn fmod(a: f64, b: f64) -> f64 {
     let m = a % b;
-    if m != 0.0 {
-        if (b < 0.0) != (m < 0.0) { m + b } else { m }
-    } else {
-        0.0f64.copysign(b)
-    }
+    if m != 0.0 { if (b < 0.0) != (m < 0.0) { m + b } else { m } } else { 0.0f64.copysign(b) }
 }
 
 /// `math.hypot(x, y)` of CPython 3.10/3.11 (`vector_norm` in Modules/mathmodule.c):
@@ -176,13 +172,9 @@ pub fn float(v: &Value) -> Result<f64, PyErr> {
             NAN_TOKEN => Ok(f64::NAN),
             INF_TOKEN => Ok(f64::INFINITY),
             NEG_INF_TOKEN => Ok(f64::NEG_INFINITY),
-            _ => parse_float_str(s)
-                .ok_or_else(|| PyErr::new("ValueError", format!("could not convert string to float: {}", repr_str(s)))),
+            _ => parse_float_str(s).ok_or_else(|| PyErr::new("ValueError", format!("could not convert string to float: {}", repr_str(s)))),
         },
-        other => Err(PyErr::new(
-            "TypeError",
-            format!("float() argument must be a string or a real number, not '{}'", type_name(other)),
-        )),
+        other => Err(PyErr::new("TypeError", format!("float() argument must be a string or a real number, not '{}'", type_name(other)))),
     }
 }
 
@@ -225,19 +217,17 @@ pub fn int(v: &Value) -> Result<i64, PyErr> {
             NEG_INF_TOKEN => float_to_int(f64::NEG_INFINITY),
             _ => {
                 let t = s.trim();
-                let ok = !t.is_empty()
-                    && t.strip_prefix(['+', '-']).unwrap_or(t).chars().all(|c| c.is_ascii_digit() || c == '_');
-                t.replace('_', "").parse::<i64>().ok().filter(|_| ok).ok_or_else(|| {
-                    PyErr::new("ValueError", format!("invalid literal for int() with base 10: {}", repr_str(s)))
-                })
+                let ok = !t.is_empty() && t.strip_prefix(['+', '-']).unwrap_or(t).chars().all(|c| c.is_ascii_digit() || c == '_');
+                t.replace('_', "")
+                    .parse::<i64>()
+                    .ok()
+                    .filter(|_| ok)
+                    .ok_or_else(|| PyErr::new("ValueError", format!("invalid literal for int() with base 10: {}", repr_str(s))))
             }
         },
         other => Err(PyErr::new(
             "TypeError",
-            format!(
-                "int() argument must be a string, a bytes-like object or a real number, not '{}'",
-                type_name(other)
-            ),
+            format!("int() argument must be a string, a bytes-like object or a real number, not '{}'", type_name(other)),
         )),
     }
 }
@@ -278,9 +268,7 @@ pub fn eq(a: &Value, b: &Value) -> bool {
         (Value::Null, Value::Null) => true,
         (Value::String(x), Value::String(y)) if !x.starts_with('\0') && !y.starts_with('\0') => x == y,
         (Value::Array(x), Value::Array(y)) => x.len() == y.len() && x.iter().zip(y).all(|(p, q)| eq(p, q)),
-        (Value::Object(x), Value::Object(y)) => {
-            x.len() == y.len() && x.iter().all(|(k, v)| y.get(k).is_some_and(|w| eq(v, w)))
-        }
+        (Value::Object(x), Value::Object(y)) => x.len() == y.len() && x.iter().all(|(k, v)| y.get(k).is_some_and(|w| eq(v, w))),
         _ => match (num(a), num(b)) {
             (Some(x), Some(y)) => x == y,
             _ => false,
@@ -320,10 +308,9 @@ pub fn repr(v: &Value) -> String {
             _ => repr_str(s),
         },
         Value::Array(a) => format!("[{}]", a.iter().map(repr).collect::<Vec<_>>().join(", ")),
-        Value::Object(o) => format!(
-            "{{{}}}",
-            o.iter().map(|(k, v)| format!("{}: {}", repr_str(k), repr(v))).collect::<Vec<_>>().join(", ")
-        ),
+        Value::Object(o) => {
+            format!("{{{}}}", o.iter().map(|(k, v)| format!("{}: {}", repr_str(k), repr(v))).collect::<Vec<_>>().join(", "))
+        }
     }
 }
 
@@ -440,9 +427,7 @@ pub fn rewrite_nonstandard_literals(text: &str) -> Option<String> {
 
 /// `str.strip().splitlines()[0]` of an error file's text (None when empty).
 pub fn first_line(text: &str) -> Option<String> {
-    let is_break = |c: char| {
-        matches!(c, '\n' | '\r' | '\x0b' | '\x0c' | '\x1c' | '\x1d' | '\x1e' | '\u{85}' | '\u{2028}' | '\u{2029}')
-    };
+    let is_break = |c: char| matches!(c, '\n' | '\r' | '\x0b' | '\x0c' | '\x1c' | '\x1d' | '\x1e' | '\u{85}' | '\u{2028}' | '\u{2029}');
     let t = text.trim_matches(|c: char| c.is_whitespace() || ('\x1c'..='\x1f').contains(&c));
     if t.is_empty() {
         return None;

@@ -205,10 +205,7 @@ mod tests {
 
     #[test]
     fn messages() {
-        assert_eq!(
-            decode_error("{\"pattern\": {\"panels\": ").unwrap(),
-            "Expecting value: line 1 column 24 (char 23)"
-        );
+        assert_eq!(decode_error("{\"pattern\": {\"panels\": ").unwrap(), "Expecting value: line 1 column 24 (char 23)");
         assert_eq!(decode_error("[1, 2] x").unwrap(), "Extra data: line 1 column 8 (char 7)");
         assert_eq!(decode_error("{\"a\" 1}").unwrap(), "Expecting ':' delimiter: line 1 column 6 (char 5)");
         assert_eq!(decode_error("[1 2]").unwrap(), "Expecting ',' delimiter: line 1 column 4 (char 3)");

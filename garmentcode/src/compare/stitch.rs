@@ -168,11 +168,7 @@ pub fn compare_stitches(se: &[&Stitch], sa: &[&Stitch], tol: f64) -> (Vec<String
         }
     }
     for (st, d) in &missing {
-        let dtxt = if *d == f64::INFINITY {
-            String::new()
-        } else {
-            format!(" (closest candidate off by {} cm)", py::fixed(*d, 4))
-        };
+        let dtxt = if *d == f64::INFINITY { String::new() } else { format!(" (closest candidate off by {} cm)", py::fixed(*d, 4)) };
         reasons.push(format!("missing stitch {}{dtxt}", stitch_str(st)));
         if *d != f64::INFINITY {
             worst = py::max(worst, *d);
@@ -188,5 +184,3 @@ pub fn compare_stitches(se: &[&Stitch], sa: &[&Stitch], tol: f64) -> (Vec<String
     }
     (reasons, worst)
 }
-
-

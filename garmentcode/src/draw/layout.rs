@@ -362,9 +362,7 @@ pub fn layout(p: &Pattern, opts: &DrawOptions) -> Result<Sheet> {
 
     // The reference draws panels ordered by (translation z, name).
     let mut order: Vec<&PanelSpec> = p.panels.iter().collect();
-    order.sort_by(|a, b| {
-        a.translation[2].partial_cmp(&b.translation[2]).unwrap_or(Ordering::Equal).then_with(|| a.name.cmp(&b.name))
-    });
+    order.sort_by(|a, b| a.translation[2].partial_cmp(&b.translation[2]).unwrap_or(Ordering::Equal).then_with(|| a.name.cmp(&b.name)));
     let mut front = Vec::new();
     let mut back = Vec::new();
     for panel in order {
@@ -579,22 +577,17 @@ fn markers(p: &Pattern, panels: &[PlacedPanel]) -> Result<Vec<Marker>> {
                 .get(side.panel.as_str())
                 .ok_or_else(|| Error::Input(format!("stitch {i} refers to a missing panel '{}'", side.panel)))?;
             let q = &panels[k];
-            let seg = q.segments.get(side.edge).ok_or_else(|| {
-                Error::Input(format!("stitch {i} refers to a missing edge {} of panel '{}'", side.edge, side.panel))
-            })?;
+            let seg = q
+                .segments
+                .get(side.edge)
+                .ok_or_else(|| Error::Input(format!("stitch {i} refers to a missing edge {} of panel '{}'", side.edge, side.panel)))?;
             let (mid, tangent) = seg.midpoint();
             let left = Vec2::new(-tangent.y, tangent.x);
             let inward = if q.ccw { left } else { -left };
             let poly = polygons[k].get_or_insert_with(|| polygon(&q.segments, 16));
             let across = ray_distance(poly, mid, inward).unwrap_or(f64::INFINITY);
             let offset = (MARKER_RADIUS + MARKER_GAP).min(across / 2.0);
-            out.push(Marker {
-                stitch: i,
-                panel: k,
-                edge: side.edge,
-                color: stitch_color(i),
-                centre: mid + inward * offset,
-            });
+            out.push(Marker { stitch: i, panel: k, edge: side.edge, color: stitch_color(i), centre: mid + inward * offset });
         }
     }
     Ok(out)

@@ -9,8 +9,8 @@ use tiny_skia::{Color, FillRule, LineCap, LineJoin, Paint, Path, PathBuilder, Pi
 use super::DrawOptions;
 use super::font;
 use super::layout::{
-    Anchor, MARKER_RADIUS, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH,
-    PlacedPanel, Rgb, Segment, Shape, Sheet, Text, TextKind,
+    Anchor, MARKER_RADIUS, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH, PlacedPanel, Rgb, Segment,
+    Shape, Sheet, Text, TextKind,
 };
 use crate::error::{Error, Result};
 use crate::math::Vec2;

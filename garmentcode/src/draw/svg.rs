@@ -8,8 +8,8 @@
 use std::fmt::Write;
 
 use super::layout::{
-    Anchor, MARKER_RADIUS, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH,
-    PlacedPanel, Rgb, Segment, Shape, Sheet, Text, TextKind,
+    Anchor, MARKER_RADIUS, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH, PlacedPanel, Rgb, Segment,
+    Shape, Sheet, Text, TextKind,
 };
 use crate::math::Vec2;
 

@@ -98,9 +98,7 @@ fn view_ids_label_vertices_and_edges() {
     assert_eq!(svg.matches("fill=\"rgb(245,96,66)\"").count(), 7);
     assert_eq!(svg.matches("fill=\"rgb(44,131,68)\"").count(), 7);
     // Edge index 0 of `front` sits 3 cm above the midpoint of its bottom edge.
-    assert!(
-        svg.contains("<text x=\"0\" y=\"-23\" font-size=\"7\" fill=\"rgb(44,131,68)\" text-anchor=\"middle\">0</text>")
-    );
+    assert!(svg.contains("<text x=\"0\" y=\"-23\" font-size=\"7\" fill=\"rgb(44,131,68)\" text-anchor=\"middle\">0</text>"));
 }
 
 #[test]
@@ -284,11 +282,7 @@ fn bounding_boxes_are_tight() {
             let hi = poly.iter().fold(Vec2::NEG_INFINITY, |a, p| a.max(*p));
             // Contains every sample, and no sample-free slack beyond sampling error.
             assert!(q.bbox.min.cmple(lo + 1e-9).all() && q.bbox.max.cmpge(hi - 1e-9).all(), "{name}: {}", q.name);
-            assert!(
-                (q.bbox.min - lo).abs().max_element() < 0.05 && (q.bbox.max - hi).abs().max_element() < 0.05,
-                "{name}: {}",
-                q.name
-            );
+            assert!((q.bbox.min - lo).abs().max_element() < 0.05 && (q.bbox.max - hi).abs().max_element() < 0.05, "{name}: {}", q.name);
         }
     }
 }

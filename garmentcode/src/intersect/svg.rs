@@ -144,12 +144,7 @@ impl Seg {
                 let c1 = mul(s, mul(3.0, add(sub(p0, mul(2.0, p1)), p2)));
                 let c2 = mul(s, mul(3.0, sub(p1, p0)));
                 let c3 = mul(s, p0);
-                Seg::Cubic([
-                    c3,
-                    add(div(c2, 3.0), c3),
-                    add(div(add(c1, mul(2.0, c2)), 3.0), c3),
-                    add(add(add(c0, c1), c2), c3),
-                ])
+                Seg::Cubic([c3, add(div(c2, 3.0), c3), add(div(add(c1, mul(2.0, c2)), 3.0), c3), add(add(add(c0, c1), c2), c3)])
             }
         }
     }
@@ -176,15 +171,7 @@ fn split_bezier(p: &[P], t: f64) -> (Vec<P>, Vec<P>) {
         if cur.len() == 1 {
             break;
         }
-        cur = cur
-            .windows(2)
-            .map(|w| {
-                [
-                    (1.0 - t) * w[0][0] + t * w[1][0],
-                    (1.0 - t) * w[0][1] + t * w[1][1],
-                ]
-            })
-            .collect();
+        cur = cur.windows(2).map(|w| [(1.0 - t) * w[0][0] + t * w[1][0], (1.0 - t) * w[0][1] + t * w[1][1]]).collect();
     }
     right.reverse();
     (left, right)
@@ -224,9 +211,7 @@ impl std::fmt::Display for IntersectError {
             IntersectError::DegenerateLine => "line with equal end points",
             IntersectError::IdenticalSegments => "intersecting a segment with an equal segment",
             IntersectError::NodalBezier => "bezier is nodal",
-            IntersectError::MaxIterations => {
-                "bezier_intersections has reached maximum iterations without terminating"
-            }
+            IntersectError::MaxIterations => "bezier_intersections has reached maximum iterations without terminating",
         };
         f.write_str(s)
     }
@@ -243,12 +228,7 @@ pub fn try_intersect(a: &Seg, b: &Seg) -> Result<Vec<(f64, f64)>, IntersectError
 /// [`try_intersect`] with the number kind of each segment's points given
 /// explicitly (see [`Num`]); e.g. pygarment's `even_armhole_openings`
 /// intersects a numpy-built Bézier with a Line of Python complexes.
-pub fn try_intersect_as(
-    a: &Seg,
-    a_num: Num,
-    b: &Seg,
-    b_num: Num,
-) -> Result<Vec<(f64, f64)>, IntersectError> {
+pub fn try_intersect_as(a: &Seg, a_num: Num, b: &Seg, b_num: Num) -> Result<Vec<(f64, f64)>, IntersectError> {
     let mut out = Vec::new();
     intersect_into(a, a_num, b, b_num, &mut out)?;
     Ok(out)
@@ -500,11 +480,7 @@ pub fn py_float_hash(v: f64) -> i64 {
             x -= MODULUS;
         }
     }
-    let e = if e >= 0 {
-        (e % BITS as i32) as u32
-    } else {
-        BITS - 1 - ((-1 - e) % BITS as i32) as u32
-    };
+    let e = if e >= 0 { (e % BITS as i32) as u32 } else { BITS - 1 - ((-1 - e) % BITS as i32) as u32 };
     x = ((x << e) & MODULUS) | (x >> (BITS - e));
     let x = (x as i64).wrapping_mul(sign);
     if x == -1 { -2 } else { x }
@@ -539,10 +515,7 @@ pub fn py_set_order(values: &[f64]) -> Vec<f64> {
 
 /// [`py_set_order`] on the stack.
 fn set_order(values: &[f64]) -> Few<f64, 4> {
-    assert!(
-        values.len() <= 4,
-        "set emulation is for the small table only"
-    );
+    assert!(values.len() <= 4, "set emulation is for the small table only");
     const MASK: usize = 7;
     let mut table: [Option<(i64, f64)>; 8] = [None; 8];
     for &x in values {
@@ -559,11 +532,7 @@ fn set_order(values: &[f64]) -> Few<f64, 4> {
                 Some(_) => {}
             }
             perturb >>= 5;
-            i = (i
-                .wrapping_mul(5)
-                .wrapping_add(1)
-                .wrapping_add(perturb as usize))
-                & MASK;
+            i = (i.wrapping_mul(5).wrapping_add(1).wrapping_add(perturb as usize)) & MASK;
         }
     }
     let mut out = Few::new();
@@ -711,10 +680,7 @@ pub mod lapack {
 
     impl Mat {
         pub fn zeros(n: usize) -> Mat {
-            Mat {
-                n,
-                a: [0.0; MAXN * MAXN],
-            }
+            Mat { n, a: [0.0; MAXN * MAXN] }
         }
         #[inline]
         pub fn get(&self, i: usize, j: usize) -> f64 {
@@ -987,16 +953,7 @@ pub mod lapack {
 
     /// DLARF applied with v = (1, v2..) and tau; `left` selects H*C, else C*H.
     /// C is the block rows r0..r1, columns c0..c1 of `a`.
-    fn dlarf(
-        a: &mut Mat,
-        left: bool,
-        v: &[f64],
-        tau: f64,
-        r0: usize,
-        r1: usize,
-        c0: usize,
-        c1: usize,
-    ) {
+    fn dlarf(a: &mut Mat, left: bool, v: &[f64], tau: f64, r0: usize, r1: usize, c0: usize, c1: usize) {
         if tau == 0.0 {
             return;
         }
@@ -1014,10 +971,7 @@ pub mod lapack {
             } else if c(a, 1, n) != 0.0 || c(a, lastv.max(1), n) != 0.0 {
                 n
             } else {
-                (1..=n)
-                    .rev()
-                    .find(|&j| (1..=lastv).any(|i| c(a, i, j) != 0.0))
-                    .unwrap_or(0)
+                (1..=n).rev().find(|&j| (1..=lastv).any(|i| c(a, i, j) != 0.0)).unwrap_or(0)
             };
             if lastv == 0 {
                 return;
@@ -1250,14 +1204,8 @@ pub mod lapack {
                     if hkk1 <= ULP * tst {
                         let ab = hkk1.max(h.get(k - 1, k).abs());
                         let ba = hkk1.min(h.get(k - 1, k).abs());
-                        let aa = h
-                            .get(k, k)
-                            .abs()
-                            .max((h.get(k - 1, k - 1) - h.get(k, k)).abs());
-                        let bb = h
-                            .get(k, k)
-                            .abs()
-                            .min((h.get(k - 1, k - 1) - h.get(k, k)).abs());
+                        let aa = h.get(k, k).abs().max((h.get(k - 1, k - 1) - h.get(k, k)).abs());
+                        let bb = h.get(k, k).abs().min((h.get(k - 1, k - 1) - h.get(k, k)).abs());
                         let s = aa + ab;
                         if ba * (ab / s) <= smlnum.max(ULP * (bb * (aa / s))) {
                             break;
@@ -1318,11 +1266,7 @@ pub mod lapack {
                     } else {
                         let a1 = tr + rtdisc;
                         let a2 = tr - rtdisc;
-                        let r = if (a1 - h22).abs() <= (a2 - h22).abs() {
-                            a1 * s
-                        } else {
-                            a2 * s
-                        };
+                        let r = if (a1 - h22).abs() <= (a2 - h22).abs() { a1 * s } else { a2 * s };
                         rt1r = r;
                         rt2r = r;
                         rt1i = 0.0;
@@ -1336,9 +1280,7 @@ pub mod lapack {
                     let mut h21s = h.get(m + 1, m);
                     let s = (h.get(m, m) - rt2r).abs() + rt2i.abs() + h21s.abs();
                     h21s = h.get(m + 1, m) / s;
-                    v[0] = h21s * h.get(m, m + 1)
-                        + (h.get(m, m) - rt1r) * ((h.get(m, m) - rt2r) / s)
-                        - rt1i * (rt2i / s);
+                    v[0] = h21s * h.get(m, m + 1) + (h.get(m, m) - rt1r) * ((h.get(m, m) - rt2r) / s) - rt1i * (rt2i / s);
                     v[1] = h21s * (h.get(m, m) + h.get(m + 1, m + 1) - rt1r - rt2r);
                     v[2] = h21s * h.get(m + 2, m + 1);
                     let s = v[0].abs() + v[1].abs() + v[2].abs();
@@ -1349,11 +1291,7 @@ pub mod lapack {
                         break;
                     }
                     let h00 = h.get(m, m - 1).abs() * (v[1].abs() + v[2].abs());
-                    let h01 = ULP
-                        * v[0].abs()
-                        * (h.get(m - 1, m - 1).abs()
-                            + h.get(m, m).abs()
-                            + h.get(m + 1, m + 1).abs());
+                    let h01 = ULP * v[0].abs() * (h.get(m - 1, m - 1).abs() + h.get(m, m).abs() + h.get(m + 1, m + 1).abs());
                     if h00 <= h01 {
                         break;
                     }
@@ -1416,12 +1354,7 @@ pub mod lapack {
                 wr[i] = h.get(i, i);
                 wi[i] = 0.0;
             } else if l + 1 == i {
-                let (r1r, r1i, r2r, r2i) = dlanv2(
-                    h.get(i - 1, i - 1),
-                    h.get(i - 1, i),
-                    h.get(i, i - 1),
-                    h.get(i, i),
-                );
+                let (r1r, r1i, r2r, r2i) = dlanv2(h.get(i - 1, i - 1), h.get(i - 1, i), h.get(i, i - 1), h.get(i, i));
                 wr[i - 1] = r1r;
                 wi[i - 1] = r1i;
                 wr[i] = r2r;
@@ -1478,12 +1411,7 @@ pub mod lapack {
 /// `bezier_point` for one coordinate (Horner forms of the library).
 fn bezier_point_1d(p: &[f64], t: f64) -> f64 {
     match p.len() {
-        4 => {
-            p[0] + t
-                * (3.0 * (p[1] - p[0])
-                    + t * (3.0 * (p[0] + p[2]) - 6.0 * p[1]
-                        + t * (-p[0] + 3.0 * (p[1] - p[2]) + p[3])))
-        }
+        4 => p[0] + t * (3.0 * (p[1] - p[0]) + t * (3.0 * (p[0] + p[2]) - 6.0 * p[1] + t * (-p[0] + 3.0 * (p[1] - p[2]) + p[3]))),
         3 => p[0] + t * (2.0 * (p[1] - p[0]) + t * (p[0] - 2.0 * p[1] + p[2])),
         2 => p[0] + t * (p[1] - p[0]),
         _ => p[0],
@@ -1499,21 +1427,13 @@ fn bezier_point(p: &[P], t: f64) -> P {
         xs[k] = q[0];
         ys[k] = q[1];
     }
-    [
-        bezier_point_1d(&xs[..p.len()], t),
-        bezier_point_1d(&ys[..p.len()], t),
-    ]
+    [bezier_point_1d(&xs[..p.len()], t), bezier_point_1d(&ys[..p.len()], t)]
 }
 
 /// `bezier2polynomial` for one real coordinate, highest degree first.
 fn bezier2poly(p: &[f64]) -> Few<f64, 4> {
     match p.len() {
-        4 => Few::from_slice(&[
-            -p[0] + 3.0 * (p[1] - p[2]) + p[3],
-            3.0 * (p[0] - 2.0 * p[1] + p[2]),
-            3.0 * (p[1] - p[0]),
-            p[0],
-        ]),
+        4 => Few::from_slice(&[-p[0] + 3.0 * (p[1] - p[2]) + p[3], 3.0 * (p[0] - 2.0 * p[1] + p[2]), 3.0 * (p[1] - p[0]), p[0]]),
         3 => Few::from_slice(&[p[0] - 2.0 * p[1] + p[2], 2.0 * (p[1] - p[0]), p[0]]),
         2 => Few::from_slice(&[p[1] - p[0], p[0]]),
         _ => Few::from_slice(p),
@@ -1635,16 +1555,11 @@ fn halve(b: &Bez) -> (Bez, Bez) {
         let f = |k: usize| {
             let (p0, p1, p2, p3) = (p[0][k], p[1][k], p[2][k], p[3][k]);
             let mid = (p0 + 3.0 * p1 + 3.0 * p2 + p3) / 8.0;
-            (
-                [p0, (p0 + p1) / 2.0, (p0 + 2.0 * p1 + p2) / 4.0, mid],
-                [mid, (p1 + 2.0 * p2 + p3) / 4.0, (p2 + p3) / 2.0, p3],
-            )
+            ([p0, (p0 + p1) / 2.0, (p0 + 2.0 * p1 + p2) / 4.0, mid], [mid, (p1 + 2.0 * p2 + p3) / 4.0, (p2 + p3) / 2.0, p3])
         };
         let (lx, rx) = f(0);
         let (ly, ry) = f(1);
-        let mk = |x: [f64; 4], y: [f64; 4]| {
-            Bez::new(&[[x[0], y[0]], [x[1], y[1]], [x[2], y[2]], [x[3], y[3]]])
-        };
+        let mk = |x: [f64; 4], y: [f64; 4]| Bez::new(&[[x[0], y[0]], [x[1], y[1]], [x[2], y[2]], [x[3], y[3]]]);
         return (mk(lx, ly), mk(rx, ry));
     }
     // de Casteljau with t = 0.5
@@ -1689,12 +1604,7 @@ fn bezier_intersections(
     out: &mut Vec<(f64, f64)>,
 ) -> Result<(), IntersectError> {
     let maxits = (1.0 - (tol_dec / longer_length).ln() / 2f64.ln()).ceil();
-    let mut pair_list = vec![BPair {
-        b1: Bez::new(bez1),
-        b2: Bez::new(bez2),
-        t1: 0.5,
-        t2: 0.5,
-    }];
+    let mut pair_list = vec![BPair { b1: Bez::new(bez1), b2: Bez::new(bez2), t1: 0.5, t2: 0.5 }];
     let mut approx_points: Vec<P> = Vec::new();
     let mut k: i32 = 0;
     while !pair_list.is_empty() && (k as f64) < maxits {
@@ -1711,9 +1621,7 @@ fn bezier_intersections(
             }
             if box_area(&bb1) < tol_dec && box_area(&bb2) < tol_dec {
                 let point = bezier_point(bez1, pair.t1);
-                let known = approx_points
-                    .iter()
-                    .any(|y| (point[0] - y[0]).hypot(point[1] - y[1]) < tol);
+                let known = approx_points.iter().any(|y| (point[0] - y[0]).hypot(point[1] - y[1]) < tol);
                 if !known {
                     approx_points.push(point);
                     out.push((pair.t1, pair.t2));
@@ -1733,30 +1641,10 @@ fn bezier_intersections(
                 let (c21, c22) = halve(&pair.b2);
                 let (t11, t12) = (pair.t1 - delta, pair.t1 + delta);
                 let (t21, t22) = (pair.t2 - delta, pair.t2 + delta);
-                new_pairs.push(BPair {
-                    b1: c11,
-                    b2: c21,
-                    t1: t11,
-                    t2: t21,
-                });
-                new_pairs.push(BPair {
-                    b1: c11,
-                    b2: c22,
-                    t1: t11,
-                    t2: t22,
-                });
-                new_pairs.push(BPair {
-                    b1: c12,
-                    b2: c21,
-                    t1: t12,
-                    t2: t21,
-                });
-                new_pairs.push(BPair {
-                    b1: c12,
-                    b2: c22,
-                    t1: t12,
-                    t2: t22,
-                });
+                new_pairs.push(BPair { b1: c11, b2: c21, t1: t11, t2: t21 });
+                new_pairs.push(BPair { b1: c11, b2: c22, t1: t11, t2: t22 });
+                new_pairs.push(BPair { b1: c12, b2: c21, t1: t12, t2: t21 });
+                new_pairs.push(BPair { b1: c12, b2: c22, t1: t12, t2: t22 });
             }
         }
         pair_list = new_pairs;
@@ -1769,12 +1657,7 @@ fn bezier_intersections(
 }
 
 /// `bezier_by_line_intersections(bezier, line)`: `(t_bezier, t_line)` pairs.
-fn bezier_by_line(
-    bez: &[P],
-    line: &[P; 2],
-    line_num: Num,
-    out: &mut Vec<(f64, f64)>,
-) -> Result<(), IntersectError> {
+fn bezier_by_line(bez: &[P], line: &[P; 2], line_num: Num, out: &mut Vec<(f64, f64)>) -> Result<(), IntersectError> {
     if line[0] == line[1] {
         return Err(IntersectError::DegenerateLine);
     }
@@ -1814,10 +1697,7 @@ fn bezier_by_line(
 
 /// svgpathtools' closed-form quadratic length over [0, 1].
 fn quad_length(p: &[P; 3]) -> f64 {
-    let a = [
-        p[0][0] - 2.0 * p[1][0] + p[2][0],
-        p[0][1] - 2.0 * p[1][1] + p[2][1],
-    ];
+    let a = [p[0][0] - 2.0 * p[1][0] + p[2][0], p[0][1] - 2.0 * p[1][1] + p[2][1]];
     let b = [2.0 * (p[1][0] - p[0][0]), 2.0 * (p[1][1] - p[0][1])];
     let abs_a = a[0].hypot(a[1]);
     let abs_b = b[0].hypot(b[1]);
@@ -1852,30 +1732,12 @@ fn quad_length(p: &[P; 3]) -> f64 {
 /// Cubic length by composite Gauss–Legendre quadrature (the reference uses
 /// QUADPACK to 1e-12; only log2 of the value matters here).
 fn cubic_length(p: &[P; 4]) -> f64 {
-    const X: [f64; 5] = [
-        0.0,
-        -0.5384693101056831,
-        0.5384693101056831,
-        -0.906179845938664,
-        0.906179845938664,
-    ];
-    const W: [f64; 5] = [
-        0.5688888888888889,
-        0.47862867049936647,
-        0.47862867049936647,
-        0.23692688505639228,
-        0.23692688505639228,
-    ];
+    const X: [f64; 5] = [0.0, -0.5384693101056831, 0.5384693101056831, -0.906179845938664, 0.906179845938664];
+    const W: [f64; 5] = [0.5688888888888889, 0.47862867049936647, 0.47862867049936647, 0.23692688505639228, 0.23692688505639228];
     let d = |t: f64| {
         let mt = 1.0 - t;
-        let dx = 3.0
-            * (mt * mt * (p[1][0] - p[0][0])
-                + 2.0 * mt * t * (p[2][0] - p[1][0])
-                + t * t * (p[3][0] - p[2][0]));
-        let dy = 3.0
-            * (mt * mt * (p[1][1] - p[0][1])
-                + 2.0 * mt * t * (p[2][1] - p[1][1])
-                + t * t * (p[3][1] - p[2][1]));
+        let dx = 3.0 * (mt * mt * (p[1][0] - p[0][0]) + 2.0 * mt * t * (p[2][0] - p[1][0]) + t * t * (p[3][0] - p[2][0]));
+        let dy = 3.0 * (mt * mt * (p[1][1] - p[0][1]) + 2.0 * mt * t * (p[2][1] - p[1][1]) + t * t * (p[3][1] - p[2][1]));
         dx.hypot(dy)
     };
     let m = 64;
@@ -1913,11 +1775,7 @@ mod tests {
 
     #[test]
     fn shared_vertex_is_ignored() {
-        let segs = [
-            Seg::Line([[0.0, 0.0], [1.0, 0.0]]),
-            Seg::Line([[1.0, 0.0], [0.0, 1.0]]),
-            Seg::Line([[0.0, 1.0], [0.0, 0.0]]),
-        ];
+        let segs = [Seg::Line([[0.0, 0.0], [1.0, 0.0]]), Seg::Line([[1.0, 0.0], [0.0, 1.0]]), Seg::Line([[0.0, 1.0], [0.0, 0.0]])];
         assert!(!try_has_self_intersection(&segs).unwrap());
     }
 }

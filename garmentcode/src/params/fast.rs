@@ -63,7 +63,16 @@ fn read_values_lines(text: &str, space: &DesignSpace) -> Option<Vec<Option<Value
     if !printable_ascii(text.as_bytes()) {
         return None;
     }
-    let mut r = Reader { text, pos: 0, cur: None, keys: Vec::with_capacity(64), path: String::with_capacity(64), space, values: vec![None; space.params().len()], depth: 0 };
+    let mut r = Reader {
+        text,
+        pos: 0,
+        cur: None,
+        keys: Vec::with_capacity(64),
+        path: String::with_capacity(64),
+        space,
+        values: vec![None; space.params().len()],
+        depth: 0,
+    };
     r.advance()?;
     let first = r.cur?;
     if first.indent != 0 {

@@ -1,9 +1,9 @@
 //! The design space: every parameter's path, type, range, default and sampling
 //! probability, in document order.
 
+use super::fast::Skeleton;
 use super::{Kind, ParamSpec, Range, Value};
 use crate::yaml::{self, Node, Value as Y};
-use super::fast::Skeleton;
 use std::collections::HashMap;
 use std::sync::OnceLock;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -139,7 +139,9 @@ impl DesignSpace {
                         out.push(format!("{here}: range [{lo}, {hi}] is empty or reversed"));
                     }
                 }
-                (Kind::Float | Kind::Int, Range::Options(_)) => out.push(format!("{here}: a {} parameter needs a [min, max] range", p.kind.as_str())),
+                (Kind::Float | Kind::Int, Range::Options(_)) => {
+                    out.push(format!("{here}: a {} parameter needs a [min, max] range", p.kind.as_str()))
+                }
                 (_, Range::Options(opts)) => {
                     if opts.is_empty() {
                         out.push(format!("{here}: no options"));

@@ -404,7 +404,13 @@ pub(crate) fn write_python_float(out: &mut String, x: f64) {
         return;
     }
     if !x.is_finite() {
-        out.push_str(if x.is_nan() { "nan" } else if x > 0.0 { "inf" } else { "-inf" });
+        out.push_str(if x.is_nan() {
+            "nan"
+        } else if x > 0.0 {
+            "inf"
+        } else {
+            "-inf"
+        });
         return;
     }
     let mut buf = zmij::Buffer::new();
@@ -636,10 +642,7 @@ fn read_edge(v: &Value, path: &str, vertices: &[[f64; 2]], absolute: bool) -> Re
                 }
                 "cubic" => {
                     expect(2)?;
-                    Some(Curvature::Cubic(
-                        vec_n::<2>(&params[0], &format!("{ppath}[0]"))?,
-                        vec_n::<2>(&params[1], &format!("{ppath}[1]"))?,
-                    ))
+                    Some(Curvature::Cubic(vec_n::<2>(&params[0], &format!("{ppath}[0]"))?, vec_n::<2>(&params[1], &format!("{ppath}[1]"))?))
                 }
                 "circle" => {
                     expect(3)?;
@@ -666,10 +669,7 @@ fn read_edge(v: &Value, path: &str, vertices: &[[f64; 2]], absolute: bool) -> Re
 
 fn endpoint_positions(vertices: &[[f64; 2]], ep: [usize; 2], path: &str) -> Result<(Vec2, Vec2)> {
     let get = |i: usize| {
-        vertices
-            .get(i)
-            .map(|v| Vec2::from(*v))
-            .ok_or_else(|| Error::Input(format!("{path}.endpoints: vertex {i} does not exist")))
+        vertices.get(i).map(|v| Vec2::from(*v)).ok_or_else(|| Error::Input(format!("{path}.endpoints: vertex {i} does not exist")))
     };
     Ok((get(ep[0])?, get(ep[1])?))
 }
@@ -729,9 +729,7 @@ fn number(v: &Value, path: &str) -> Result<f64> {
 }
 
 fn index(v: &Value, path: &str) -> Result<usize> {
-    v.as_u64()
-        .map(|x| x as usize)
-        .ok_or_else(|| Error::Input(format!("{path}: expected a non-negative integer index, got {}", kind(v))))
+    v.as_u64().map(|x| x as usize).ok_or_else(|| Error::Input(format!("{path}: expected a non-negative integer index, got {}", kind(v))))
 }
 
 fn flag(v: &Value, path: &str) -> Result<bool> {
@@ -828,7 +826,26 @@ mod tests {
                 assert_eq!((last - b'0') % 2, 0, "{x:e}: {ours} vs {oracle}");
             }
         };
-        for x in [0.0, -0.0, 1.0, -1.5, 0.1, 1e-4, 9.999e-5, 1e-5, 1e15, 1e16, 1.5e16, 123456789.0, 5e-324, f64::MAX, -f64::MIN_POSITIVE, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        for x in [
+            0.0,
+            -0.0,
+            1.0,
+            -1.5,
+            0.1,
+            1e-4,
+            9.999e-5,
+            1e-5,
+            1e15,
+            1e16,
+            1.5e16,
+            123456789.0,
+            5e-324,
+            f64::MAX,
+            -f64::MIN_POSITIVE,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ] {
             check(x);
         }
         for _ in 0..200_000 {

@@ -151,10 +151,7 @@ impl Pattern {
         p.panels = panels;
         p.stitches = stitches
             .into_iter()
-            .map(|r| StitchSpec {
-                sides: r.sides.map(|(panel, edge)| StitchSide { panel, edge }),
-                right_wrong: r.right_wrong,
-            })
+            .map(|r| StitchSpec { sides: r.sides.map(|(panel, edge)| StitchSide { panel, edge }), right_wrong: r.right_wrong })
             .collect();
         if !p.panels.is_empty() {
             p.panel_order = Some(panel_order(&p));

@@ -51,10 +51,7 @@ fn order(items: &[usize], loc: &[(String, Vec3)], dim: usize) -> Vec<usize> {
     }
     let mut sorted: Vec<usize> = items.to_vec();
     sorted.sort_by(|&a, &b| {
-        loc[a].1[dim]
-            .partial_cmp(&loc[b].1[dim])
-            .unwrap_or(std::cmp::Ordering::Equal)
-            .then_with(|| loc[a].0.cmp(&loc[b].0))
+        loc[a].1[dim].partial_cmp(&loc[b].1[dim]).unwrap_or(std::cmp::Ordering::Equal).then_with(|| loc[a].0.cmp(&loc[b].0))
     });
     if dim + 1 < 3 {
         let (mut start, mut end) = (0usize, 0usize);

@@ -131,7 +131,13 @@ pub fn validate(p: &Pattern) -> Vec<Problem> {
         for (i, e) in panel.edges.iter().enumerate() {
             for &v in &e.endpoints {
                 if v >= nv {
-                    out.push(err(ProblemKind::VertexOutOfRange, Some(name), Some(i), None, format!("vertex {v} does not exist (the panel has {nv})")));
+                    out.push(err(
+                        ProblemKind::VertexOutOfRange,
+                        Some(name),
+                        Some(i),
+                        None,
+                        format!("vertex {v} does not exist (the panel has {nv})"),
+                    ));
                     ok = false;
                 }
             }
@@ -164,7 +170,9 @@ pub fn validate(p: &Pattern) -> Vec<Problem> {
     for (si, s) in p.stitches.iter().enumerate() {
         for side in &s.sides {
             match p.panel(&side.panel) {
-                None => out.push(err(ProblemKind::UnknownPanel, Some(&side.panel), Some(side.edge), Some(si), "no panel with this name".into())),
+                None => {
+                    out.push(err(ProblemKind::UnknownPanel, Some(&side.panel), Some(side.edge), Some(si), "no panel with this name".into()))
+                }
                 Some(panel) if side.edge >= panel.edges.len() => out.push(err(
                     ProblemKind::EdgeOutOfRange,
                     Some(&side.panel),
@@ -192,7 +200,13 @@ pub fn validate(p: &Pattern) -> Vec<Problem> {
         a.sort_unstable();
         b.sort_unstable();
         if a != b {
-            out.push(err(ProblemKind::PanelOrderMismatch, None, None, None, "panel_order does not list exactly the pattern's panels".into()));
+            out.push(err(
+                ProblemKind::PanelOrderMismatch,
+                None,
+                None,
+                None,
+                "panel_order does not list exactly the pattern's panels".into(),
+            ));
         }
     }
 
@@ -228,10 +242,7 @@ pub fn validate(p: &Pattern) -> Vec<Problem> {
                     ratio: Some(ratio),
                     message: format!(
                         "{:.2} cm stitched to {:.2} cm ({}:{}), ratio {ratio:.3} (a gather, or a mistake)",
-                        l1,
-                        l2,
-                        s.sides[1].panel,
-                        s.sides[1].edge,
+                        l1, l2, s.sides[1].panel, s.sides[1].edge,
                     ),
                 });
             }

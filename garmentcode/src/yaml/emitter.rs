@@ -410,9 +410,7 @@ impl Emitter {
                     self.write_indent();
                     start = end;
                 }
-            } else if (ch.is_none() || matches!(ch, Some(' ' | '\n' | '\u{85}' | '\u{2028}' | '\u{2029}' | '\'')))
-                && start < end
-            {
+            } else if (ch.is_none() || matches!(ch, Some(' ' | '\n' | '\u{85}' | '\u{2028}' | '\u{2029}' | '\''))) && start < end {
                 self.write_chars(&text[start..end]);
                 start = end;
             }
@@ -574,13 +572,7 @@ pub(crate) fn push_float_repr(out: &mut String, f: f64) {
 /// PyYAML `analyze_scalar` (with `allow_unicode=False`).
 fn analyze(scalar: &str) -> Analysis {
     if scalar.is_empty() {
-        return Analysis {
-            empty: true,
-            multiline: false,
-            allow_flow_plain: false,
-            allow_block_plain: true,
-            allow_single_quoted: true,
-        };
+        return Analysis { empty: true, multiline: false, allow_flow_plain: false, allow_block_plain: true, allow_single_quoted: true };
     }
     let chars: Vec<char> = scalar.chars().collect();
     let n = chars.len();

@@ -18,7 +18,7 @@
 //! which cost more than the parsing itself.
 
 use crate::yaml::parser::keys_equal;
-use crate::yaml::resolve::{resolve_plain, Resolved};
+use crate::yaml::resolve::{Resolved, resolve_plain};
 use crate::yaml::scanner::MAX_DEPTH;
 use crate::yaml::{Node, Value};
 
@@ -68,7 +68,25 @@ const NULL_NODE: Node = Node { value: Value::Null, line: 0, col: 0 };
 fn is_indicator(b: u8) -> bool {
     matches!(
         b,
-        b'-' | b'?' | b':' | b',' | b'[' | b']' | b'{' | b'}' | b'#' | b'&' | b'*' | b'!' | b'|' | b'>' | b'\'' | b'"' | b'%' | b'@' | b'`' | b' '
+        b'-' | b'?'
+            | b':'
+            | b','
+            | b'['
+            | b']'
+            | b'{'
+            | b'}'
+            | b'#'
+            | b'&'
+            | b'*'
+            | b'!'
+            | b'|'
+            | b'>'
+            | b'\''
+            | b'"'
+            | b'%'
+            | b'@'
+            | b'`'
+            | b' '
     )
 }
 
@@ -157,11 +175,7 @@ impl<'a> Fast<'a> {
     /// Character column of byte `pos` on `l`'s line.
     #[inline(always)]
     fn col(&self, l: &Line, pos: usize) -> u32 {
-        if l.ascii {
-            (pos - l.line_start) as u32
-        } else {
-            self.src[l.line_start..pos].iter().filter(|&&b| b & 0xC0 != 0x80).count() as u32
-        }
+        if l.ascii { (pos - l.line_start) as u32 } else { self.src[l.line_start..pos].iter().filter(|&&b| b & 0xC0 != 0x80).count() as u32 }
     }
 
     #[inline(always)]
@@ -442,11 +456,7 @@ impl<'a> Fast<'a> {
         while i < l.end && self.src[i] == b' ' {
             i += 1;
         }
-        if i == l.end || (self.src[i] == b'#' && i > start) {
-            Some(())
-        } else {
-            None
-        }
+        if i == l.end || (self.src[i] == b'#' && i > start) { Some(()) } else { None }
     }
 
     /// `[a, b, c]` on one line, with plain or quoted scalar items.

@@ -39,9 +39,9 @@ mod scanner;
 
 use std::fmt;
 
+pub(crate) use emitter::push_float_repr;
 pub use emitter::to_string;
 pub(crate) use resolve::{Resolved, resolve_plain, resolves_to_value};
-pub(crate) use emitter::push_float_repr;
 
 /// A YAML value as PyYAML `safe_load` would build it (restricted to the types
 /// the supported subset can produce).
@@ -93,10 +93,7 @@ impl Node {
     /// The value of `key` if this is a mapping with a string key `key`.
     pub fn get(&self, key: &str) -> Option<&Node> {
         match &self.value {
-            Value::Map(pairs) => pairs
-                .iter()
-                .find(|(k, _)| matches!(&k.value, Value::Str(s) if s == key))
-                .map(|(_, v)| v),
+            Value::Map(pairs) => pairs.iter().find(|(k, _)| matches!(&k.value, Value::Str(s) if s == key)).map(|(_, v)| v),
             _ => None,
         }
     }

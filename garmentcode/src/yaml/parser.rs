@@ -6,8 +6,8 @@
 //! Also turns PyYAML's terse parser errors ("expected <block end>, but found
 //! '<block mapping start>'") into messages about what is wrong in the file.
 
-use crate::yaml::resolve::{resolve_plain, Resolved};
-use crate::yaml::scanner::{check_characters, short_quote, Kind, Mark, Scanner, Style, Text, Token, MAX_DEPTH};
+use crate::yaml::resolve::{Resolved, resolve_plain};
+use crate::yaml::scanner::{Kind, MAX_DEPTH, Mark, Scanner, Style, Text, Token, check_characters, short_quote};
 use crate::yaml::{Node, Value, YamlError};
 
 pub(crate) fn parse(text: &str) -> Result<Node, YamlError> {
@@ -62,10 +62,9 @@ impl<'a> Parser<'a> {
                 Kind::DocStart => {
                     let m = t.start;
                     if doc.is_some() {
-                        return Err(self.error(
-                            m,
-                            "a second document ('---') is not supported: a file must hold exactly one document".into(),
-                        ));
+                        return Err(
+                            self.error(m, "a second document ('---') is not supported: a file must hold exactly one document".into())
+                        );
                     }
                     self.s.next_token()?;
                     let k = self.s.peek_kind()?;
@@ -81,10 +80,7 @@ impl<'a> Parser<'a> {
                 _ => {
                     let m = t.start;
                     let what = self.describe_next();
-                    return Err(self.error(
-                        m,
-                        format!("expected the end of the input after the document end marker '...', found {}", what),
-                    ));
+                    return Err(self.error(m, format!("expected the end of the input after the document end marker '...', found {}", what)));
                 }
             }
         }
@@ -172,10 +168,7 @@ impl<'a> Parser<'a> {
             Resolved::Timestamp => {
                 return Err(self.error(
                     m,
-                    format!(
-                        "timestamps are not supported: {} would be read as a date; quote it to make it a string",
-                        short_quote(s)
-                    ),
+                    format!("timestamps are not supported: {} would be read as a date; quote it to make it a string", short_quote(s)),
                 ));
             }
             Resolved::IntOutOfRange => {
@@ -244,19 +237,11 @@ impl<'a> Parser<'a> {
             }
             let key_tok = self.s.next_token()?;
             let k = self.s.peek_kind()?;
-            let key = if matches!(k, Kind::Key | Kind::Value | Kind::BlockEnd) {
-                self.empty(key_tok.end)
-            } else {
-                self.parse_key(true)?
-            };
+            let key = if matches!(k, Kind::Key | Kind::Value | Kind::BlockEnd) { self.empty(key_tok.end) } else { self.parse_key(true)? };
             let value = if self.s.peek_kind()? == Kind::Value {
                 let v = self.s.next_token()?;
                 let k = self.s.peek_kind()?;
-                if matches!(k, Kind::Key | Kind::Value | Kind::BlockEnd) {
-                    self.empty(v.end)
-                } else {
-                    self.parse_node(true, true)?
-                }
+                if matches!(k, Kind::Key | Kind::Value | Kind::BlockEnd) { self.empty(v.end) } else { self.parse_node(true, true)? }
             } else {
                 let m = self.s.peek_token()?.start;
                 self.empty(m)
@@ -281,10 +266,7 @@ impl<'a> Parser<'a> {
         }
         let m = t.start;
         let node = self.parse_node(block, block)?;
-        Err(self.error(
-            m,
-            format!("a {} cannot be a mapping key (keys must be scalars)", node.value.type_name()),
-        ))
+        Err(self.error(m, format!("a {} cannot be a mapping key (keys must be scalars)", node.value.type_name())))
     }
 
     /// Appends a pair, refusing duplicate keys (PyYAML would silently keep the
@@ -300,13 +282,9 @@ impl<'a> Parser<'a> {
                 _ => "?".to_string(),
             };
             let m = Mark { pos: 0, line: key.line.saturating_sub(1), col: key.col.saturating_sub(1) };
-            return Err(self.error(
-                m,
-                format!(
-                    "duplicate mapping key {} (first defined on line {}, column {})",
-                    shown, first.line, first.col
-                ),
-            ));
+            return Err(
+                self.error(m, format!("duplicate mapping key {} (first defined on line {}, column {})", shown, first.line, first.col))
+            );
         }
         pairs.push((key, value));
         Ok(())
@@ -367,11 +345,7 @@ impl<'a> Parser<'a> {
         if t.kind == Kind::Value {
             let v = self.s.next_token()?;
             let k = self.s.peek_kind()?;
-            if k == Kind::FlowEntry || k == end {
-                Ok(self.empty(v.end))
-            } else {
-                self.parse_node(false, false)
-            }
+            if k == Kind::FlowEntry || k == end { Ok(self.empty(v.end)) } else { self.parse_node(false, false) }
         } else {
             let m = t.start;
             Ok(self.empty(m))
@@ -490,7 +464,12 @@ impl<'a> Parser<'a> {
                 // A line indented deeper than its siblings but not nested under anything.
                 let mut expected = format!("column {}", open.col + 1);
                 if let Some(c) = self.last_closed_col.filter(|&c| c > open.col && c != m.col) {
-                    expected.push_str(&format!(" (like the {} started at line {}), or column {} (to continue the nested block above)", coll, open.line + 1, c + 1));
+                    expected.push_str(&format!(
+                        " (like the {} started at line {}), or column {} (to continue the nested block above)",
+                        coll,
+                        open.line + 1,
+                        c + 1
+                    ));
                 } else {
                     expected.push_str(&format!(" (like the {} started at line {})", coll, open.line + 1));
                 }
@@ -526,10 +505,7 @@ impl<'a> Parser<'a> {
         };
         let open_ch = if close == b']' { '[' } else { '{' };
         if kind == Kind::StreamEnd {
-            return self.error(
-                open,
-                format!("unclosed '{}': the input ends before the matching '{}'", open_ch, close as char),
-            );
+            return self.error(open, format!("unclosed '{}': the input ends before the matching '{}'", open_ch, close as char));
         }
         let what = self.describe_next();
         self.error(

@@ -264,11 +264,7 @@ fn construct_int(s: &str, kind: IntKind) -> Resolved {
         }
     };
     if neg {
-        if m <= 1u128 << 63 {
-            Resolved::Int((m as i128).wrapping_neg() as i64)
-        } else {
-            Resolved::IntOutOfRange
-        }
+        if m <= 1u128 << 63 { Resolved::Int((m as i128).wrapping_neg() as i64) } else { Resolved::IntOutOfRange }
     } else if m <= i64::MAX as u128 {
         Resolved::Int(m as i64)
     } else {
@@ -447,15 +443,49 @@ mod tests {
     #[test]
     fn resolves_to_value_matches_resolve_plain() {
         let words = [
-            "", "~", "null", "x", "1", "-1", "+1", "1.", ".5", "-.5", "+.5", "1.0e+3", "1.0e3", "1e3", "1_0.5", "1:30", "1:30.5",
-            "99999999999999999999:0.5", "9223372036854775808", "0x_", "0b_", "0x1F", "0777", "08", "2001-12-14", "<<", "=", ".inf",
-            "-.inf", ".nan", ".NaN", "yes", "Off", "0.5", "-0.25", "1__", "._5", "1:60.5", "0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0.5",
+            "",
+            "~",
+            "null",
+            "x",
+            "1",
+            "-1",
+            "+1",
+            "1.",
+            ".5",
+            "-.5",
+            "+.5",
+            "1.0e+3",
+            "1.0e3",
+            "1e3",
+            "1_0.5",
+            "1:30",
+            "1:30.5",
+            "99999999999999999999:0.5",
+            "9223372036854775808",
+            "0x_",
+            "0b_",
+            "0x1F",
+            "0777",
+            "08",
+            "2001-12-14",
+            "<<",
+            "=",
+            ".inf",
+            "-.inf",
+            ".nan",
+            ".NaN",
+            "yes",
+            "Off",
+            "0.5",
+            "-0.25",
+            "1__",
+            "._5",
+            "1:60.5",
+            "0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0:0.5",
         ];
         for w in words {
-            let expected = matches!(
-                resolve_plain(w),
-                Resolved::Null | Resolved::Bool(_) | Resolved::Int(_) | Resolved::Float(_) | Resolved::Str
-            );
+            let expected =
+                matches!(resolve_plain(w), Resolved::Null | Resolved::Bool(_) | Resolved::Int(_) | Resolved::Float(_) | Resolved::Str);
             assert_eq!(resolves_to_value(w), expected, "{w:?}");
         }
     }

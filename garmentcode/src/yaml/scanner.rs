@@ -394,19 +394,14 @@ impl<'a> Scanner<'a> {
             b',' => return self.fetch_flow_entry(),
             b'-' if is_blankz(self.peek(1)) => return self.fetch_block_entry(),
             b'?' if self.flow_level > 0 || is_blankz(self.peek(1)) => {
-                return self.err(
-                    "explicit mapping keys ('? key') are not supported; write 'key: value'".into(),
-                );
+                return self.err("explicit mapping keys ('? key') are not supported; write 'key: value'".into());
             }
             b':' if self.flow_level > 0 || is_blankz(self.peek(1)) => return self.fetch_value(prev_plain),
             b'*' => return self.err("aliases ('*name') are not supported".into()),
             b'&' => return self.err("anchors ('&name') are not supported".into()),
             b'!' => return self.err("tags ('!tag', '!!type') are not supported; quote the value to make it a string".into()),
             b'|' | b'>' if self.flow_level == 0 => {
-                return self.err(format!(
-                    "block scalars ('{}') are not supported; use a quoted string",
-                    ch as char
-                ));
+                return self.err(format!("block scalars ('{}') are not supported; use a quoted string", ch as char));
             }
             b'\'' => return self.fetch_flow_scalar(Style::Single),
             b'"' => return self.fetch_flow_scalar(Style::Double),
@@ -440,8 +435,8 @@ impl<'a> Scanner<'a> {
         }
         for level in 0..self.possible_keys.len() {
             if let Some(key) = self.possible_keys[level] {
-                let stale = key.mark.line != self.line
-                    || (self.pos - key.mark.pos > 1024 && self.chars_between(key.mark.pos, self.pos) > 1024);
+                let stale =
+                    key.mark.line != self.line || (self.pos - key.mark.pos > 1024 && self.chars_between(key.mark.pos, self.pos) > 1024);
                 if stale {
                     if key.required {
                         return Err(self.missing_colon_error(key));
@@ -634,11 +629,7 @@ impl<'a> Scanner<'a> {
         let ch = self.peek(0) as char;
         if self.flow_level == 0 {
             // PyYAML's parser rejects a stray closing bracket wherever it is.
-            return self.err(format!(
-                "unexpected '{}' without a matching '{}'",
-                ch,
-                if ch == ']' { '[' } else { '{' }
-            ));
+            return self.err(format!("unexpected '{}' without a matching '{}'", ch, if ch == ']' { '[' } else { '{' }));
         }
         self.remove_possible_simple_key()?;
         self.possible_keys.pop();
@@ -754,8 +745,7 @@ impl<'a> Scanner<'a> {
                 | b'@'
                 | b'`'
         );
-        !indicator
-            || (!is_blankz(self.peek(1)) && (ch == b'-' || (self.flow_level == 0 && (ch == b'?' || ch == b':'))))
+        !indicator || (!is_blankz(self.peek(1)) && (ch == b'-' || (self.flow_level == 0 && (ch == b'?' || ch == b':'))))
     }
 
     // ----- scanners ----------------------------------------------------------
@@ -1124,10 +1114,7 @@ fn check_slow(text: &str, from: usize, to: usize) -> Result<(), YamlError> {
             return Err(YamlError {
                 line,
                 col,
-                message: format!(
-                    "the Unicode line break U+{:04X} is not supported; use '\\n' line breaks",
-                    u
-                ),
+                message: format!("the Unicode line break U+{:04X} is not supported; use '\\n' line breaks", u),
             });
         }
         if !ok {
@@ -1143,10 +1130,7 @@ fn char_error(text: &str, pos: usize, c: char) -> YamlError {
     YamlError {
         line,
         col,
-        message: format!(
-            "special character U+{:04X} is not allowed in YAML (only printable characters, tabs and line breaks)",
-            c as u32
-        ),
+        message: format!("special character U+{:04X} is not allowed in YAML (only printable characters, tabs and line breaks)", c as u32),
     }
 }
 

@@ -125,7 +125,8 @@ fn agrees_with_python_on_corpus() {
     let refdir = ref_dir();
     let t_load = std::time::Instant::now();
     let corpus: Value =
-        serde_json::from_str(&std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/compare/data/corpus.json")).unwrap()).unwrap();
+        serde_json::from_str(&std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/compare/data/corpus.json")).unwrap())
+            .unwrap();
     let mut base = Base { specs: BTreeMap::new() };
     for d in std::fs::read_dir(&refdir).unwrap() {
         let d = d.unwrap().path();
@@ -158,8 +159,7 @@ fn agrees_with_python_on_corpus() {
         let reasons: Vec<String> = v.reasons.iter().map(norm).collect();
         let notes: Vec<String> = v.notes.iter().map(norm).collect();
         let py = &p["python"];
-        let py_first: Vec<String> =
-            py["reasons"].as_array().unwrap().iter().map(|r| r.as_str().unwrap().to_string()).collect();
+        let py_first: Vec<String> = py["reasons"].as_array().unwrap().iter().map(|r| r.as_str().unwrap().to_string()).collect();
         let py_dev = py["max_dev"].as_f64().unwrap_or(f64::INFINITY);
         let t = tallies.entry(p["cat"].as_str().unwrap().to_string()).or_default();
         t.pairs += 1;
@@ -196,7 +196,9 @@ fn agrees_with_python_on_corpus() {
             ));
         }
     }
-    println!("| category | pairs | Python pass (PASS*) | verdict agrees | first reason agrees | all reasons+notes agree (count, first 3, hash) | max_dev bit-equal |");
+    println!(
+        "| category | pairs | Python pass (PASS*) | verdict agrees | first reason agrees | all reasons+notes agree (count, first 3, hash) | max_dev bit-equal |"
+    );
     println!("|---|---|---|---|---|---|---|");
     let mut total = Tally::default();
     for (c, t) in &tallies {
@@ -216,7 +218,12 @@ fn agrees_with_python_on_corpus() {
         "| total | {} | {} ({}) | {} | {} | {} | {} |",
         total.pairs, total.py_pass, total.py_star, total.verdict, total.first_reason, total.all_text, total.max_dev
     );
-    println!("comparisons: {:.3} s for {} pairs (total with layout {:.3} s)", compare_time.as_secs_f64(), total.pairs, t0.elapsed().as_secs_f64());
+    println!(
+        "comparisons: {:.3} s for {} pairs (total with layout {:.3} s)",
+        compare_time.as_secs_f64(),
+        total.pairs,
+        t0.elapsed().as_secs_f64()
+    );
     slowest.sort();
     slowest.reverse();
     let mut times: Vec<_> = slowest.iter().map(|(d, _)| d.as_secs_f64()).collect();

@@ -11,14 +11,7 @@ fn helpers_match_cpython_bits() {
     for line in text.lines().filter(|l| !l.starts_with('#')) {
         let v: Vec<f64> = line.split(' ').map(f).collect();
         let (x, y) = (v[0], v[1]);
-        let got = [
-            py::hypot(x, y),
-            py::sq(x),
-            py::sq(y),
-            y.atan2(x),
-            x.cos(),
-            py::fmod(x - y, 2.0 * std::f64::consts::PI),
-        ];
+        let got = [py::hypot(x, y), py::sq(x), py::sq(y), y.atan2(x), x.cos(), py::fmod(x - y, 2.0 * std::f64::consts::PI)];
         for k in 0..6 {
             assert_eq!(got[k].to_bits(), v[k + 2].to_bits(), "column {k} of {line}");
         }

@@ -4,8 +4,6 @@
 //! a continuous map's steps shrink with it. Each test re-sweeps the interval of the largest
 //! step in finer sub-steps and checks that the move is split among them.
 
-
-
 use garmentcode::curves::inversion::*;
 
 /// Max distance between two cubics at equal parameters (bounds the outline movement).
@@ -69,8 +67,7 @@ fn sweep(v: &super::common::Vector, what: &str, solve: Solver) -> (f64, f64, f64
 
 /// Sweeps where the reference-objective minimiser jumps (a curvature peak crosses a sample),
 /// plus the T-shirt sleeve: (vector index in data/all_vectors.json, input).
-const CASES: [(usize, &str); 6] =
-    [(0, "len"), (377, "endy"), (523, "endy"), (511, "ang1"), (143, "endy"), (452, "len")];
+const CASES: [(usize, &str); 6] = [(0, "len"), (377, "endy"), (523, "endy"), (511, "ang1"), (143, "endy"), (452, "len")];
 
 fn vectors() -> Vec<super::common::Vector> {
     super::common::load("tests/inversion/data/all_vectors.json")

@@ -2,8 +2,6 @@
 //! 28 from the reference case designs and 546 from random designs with sleeves or hoods on
 //! the five bodies; collected by tools/collect_inversion_calls.py).
 
-
-
 use garmentcode::curves::inversion::*;
 
 fn vectors() -> Vec<super::common::Vector> {

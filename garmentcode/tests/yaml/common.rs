@@ -255,8 +255,7 @@ pub fn tag(v: &Value) -> String {
             format!("[\"seq\", [{}]]", parts.join(", "))
         }
         Value::Map(pairs) => {
-            let parts: Vec<String> =
-                pairs.iter().map(|(k, v)| format!("[{}, {}]", tag(&k.value), tag(&v.value))).collect();
+            let parts: Vec<String> = pairs.iter().map(|(k, v)| format!("[{}, {}]", tag(&k.value), tag(&v.value))).collect();
             format!("[\"map\", [{}]]", parts.join(", "))
         }
     }
@@ -268,8 +267,7 @@ pub fn same(a: &Value, b: &Value) -> bool {
         (Value::Float(x), Value::Float(y)) => x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()),
         (Value::Seq(x), Value::Seq(y)) => x.len() == y.len() && x.iter().zip(y).all(|(p, q)| same(&p.value, &q.value)),
         (Value::Map(x), Value::Map(y)) => {
-            x.len() == y.len()
-                && x.iter().zip(y).all(|((k1, v1), (k2, v2))| same(&k1.value, &k2.value) && same(&v1.value, &v2.value))
+            x.len() == y.len() && x.iter().zip(y).all(|((k1, v1), (k2, v2))| same(&k1.value, &k2.value) && same(&v1.value, &v2.value))
         }
         _ => a == b,
     }
@@ -283,8 +281,7 @@ pub fn same_with_positions(a: &Node, b: &Node) -> bool {
     match (&a.value, &b.value) {
         (Value::Seq(x), Value::Seq(y)) => x.len() == y.len() && x.iter().zip(y).all(|(p, q)| same_with_positions(p, q)),
         (Value::Map(x), Value::Map(y)) => {
-            x.len() == y.len()
-                && x.iter().zip(y).all(|((k1, v1), (k2, v2))| same_with_positions(k1, k2) && same_with_positions(v1, v2))
+            x.len() == y.len() && x.iter().zip(y).all(|((k1, v1), (k2, v2))| same_with_positions(k1, k2) && same_with_positions(v1, v2))
         }
         (x, y) => same(x, y),
     }

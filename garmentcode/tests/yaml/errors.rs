@@ -1,7 +1,7 @@
 //! Error messages: position and wording for typical mistakes and for every
 //! unsupported feature.
 
-use garmentcode::yaml::{parse, Value};
+use garmentcode::yaml::{Value, parse};
 
 /// (input, line, column, expected part of the message)
 const CASES: &[(&str, u32, u32, &str)] = &[
@@ -10,7 +10,12 @@ const CASES: &[(&str, u32, u32, &str)] = &[
     ("a:\n  v: 1\n  range [1, 2]\n  type: float\n", 3, 15, "expected ':' after mapping key \"range [1, 2]\""),
     ("a:\n  range [1, 2]\n  type: float\n", 3, 7, "continues the plain value \"range [1, 2]\" started at line 2, column 3"),
     ("a: 1\nkey:value\n", 2, 10, "(a ':' only separates key and value when followed by a space)"),
-    ("design:\n  meta:\n    upper:\n      v: null\n     range: [a]\n", 5, 6, "bad indentation: mapping key \"range\" is at column 6, expected column 5"),
+    (
+        "design:\n  meta:\n    upper:\n      v: null\n     range: [a]\n",
+        5,
+        6,
+        "bad indentation: mapping key \"range\" is at column 6, expected column 5",
+    ),
     ("a:\n  b: 1\n c: 2\n", 3, 2, "bad indentation: mapping key \"c\""),
     ("a: 1\n  b: 2\n", 2, 4, "continues the plain value \"1\" started at line 1, column 4"),
     ("a:\n  range: [1, 2\n  type: float\n", 3, 7, "inside the '[' opened at line 2, column 10; is the closing ']' missing?"),

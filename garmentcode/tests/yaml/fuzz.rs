@@ -3,8 +3,6 @@
 //! same kind of mutated inputs against PyYAML itself (needs a Python with PyYAML
 //! 6.0 in `PYYAML_PYTHON`; ignored by default).
 
-
-
 use super::common::*;
 use garmentcode::yaml::{parse, to_string};
 use std::io::Write;
@@ -42,10 +40,64 @@ fn samples() -> Vec<String> {
 }
 
 const INTERESTING: &[&str] = &[
-    ":", ": ", "-", "- ", " ", "  ", "\n", "\r\n", "\r", "\t", "#", " #", "'", "\"", "\\", "[", "]", "{", "}",
-    ",", "?", "? ", "!", "&a ", "*a", "|", ">", "%", "@", "`", "---", "...", "~", "=", "<<", "0x", "0b", "0o",
-    "1e3", ".5", "-.inf", ".nan", "1:30", "2001-12-14", "yes", "null", "\u{FEFF}", "é", "\u{2028}", "\u{0}", "\\u",
-    "\\x4", "_", "+", "1.", "\n  ", "\n- ", "\nkey: ",
+    ":",
+    ": ",
+    "-",
+    "- ",
+    " ",
+    "  ",
+    "\n",
+    "\r\n",
+    "\r",
+    "\t",
+    "#",
+    " #",
+    "'",
+    "\"",
+    "\\",
+    "[",
+    "]",
+    "{",
+    "}",
+    ",",
+    "?",
+    "? ",
+    "!",
+    "&a ",
+    "*a",
+    "|",
+    ">",
+    "%",
+    "@",
+    "`",
+    "---",
+    "...",
+    "~",
+    "=",
+    "<<",
+    "0x",
+    "0b",
+    "0o",
+    "1e3",
+    ".5",
+    "-.inf",
+    ".nan",
+    "1:30",
+    "2001-12-14",
+    "yes",
+    "null",
+    "\u{FEFF}",
+    "é",
+    "\u{2028}",
+    "\u{0}",
+    "\\u",
+    "\\x4",
+    "_",
+    "+",
+    "1.",
+    "\n  ",
+    "\n- ",
+    "\nkey: ",
 ];
 
 /// One random edit: replace/insert/delete characters, truncate, or shuffle lines.
@@ -222,13 +274,7 @@ fn pathological_inputs() {
 fn run_oracle(mode: &str, input: &str) -> Option<String> {
     let python = std::env::var("PYYAML_PYTHON").unwrap_or_else(|_| "python3".into());
     let script = format!("{}/../tools/pyyaml_oracle.py", env!("CARGO_MANIFEST_DIR"));
-    let mut child = Command::new(python)
-        .arg(script)
-        .arg(mode)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()
-        .ok()?;
+    let mut child = Command::new(python).arg(script).arg(mode).stdin(Stdio::piped()).stdout(Stdio::piped()).spawn().ok()?;
     child.stdin.take()?.write_all(input.as_bytes()).ok()?;
     let out = child.wait_with_output().ok()?;
     assert!(out.status.success(), "oracle failed");
@@ -301,7 +347,12 @@ fn differential_against_pyyaml() {
     for (k, v) in &unsupported {
         eprintln!("  unsupported {:5}  {}", v, k);
     }
-    assert!(mismatches.is_empty(), "{} mismatches, first ones:\n{}", mismatches.len(), mismatches.iter().take(15).cloned().collect::<Vec<_>>().join("\n"));
+    assert!(
+        mismatches.is_empty(),
+        "{} mismatches, first ones:\n{}",
+        mismatches.len(),
+        mismatches.iter().take(15).cloned().collect::<Vec<_>>().join("\n")
+    );
 }
 
 /// Our writer's output, read by PyYAML, gives back the value we wrote.

@@ -1,10 +1,8 @@
 //! Comparisons with PyYAML results recorded by `tools/pyyaml_oracle.py`
 //! (see `tools/README.md` for how to regenerate `tests/yaml/data/*.json`).
 
-
-
 use super::common::*;
-use garmentcode::yaml::{parse, to_string, Node, Value};
+use garmentcode::yaml::{Node, Value, parse, to_string};
 
 /// Every YAML file under the reference directory reads exactly as PyYAML `safe_load`.
 #[test]

@@ -2,15 +2,35 @@
 //! path agreeing with the full parser on everything the writer produces
 //! (and on hand-formatted variants of it).
 
-
-
 use super::common::*;
-use garmentcode::yaml::{parse, testing, to_string, Node, Value};
+use garmentcode::yaml::{Node, Value, parse, testing, to_string};
 
 /// Words typical of design files (what the fast path handles).
 const SIMPLE: &[&str] = &[
-    "FittedShirt", "Shirt", "SkirtCircle", "null", "true", "false", "select_null", "float", "0.5", "1.", "-0.35", "12",
-    "a b", "x-y", "CircleNeckHalf", "1e3", "yes", "0x1F", "é-word", "~", "1_000", ".inf", "'quoted'", "it's",
+    "FittedShirt",
+    "Shirt",
+    "SkirtCircle",
+    "null",
+    "true",
+    "false",
+    "select_null",
+    "float",
+    "0.5",
+    "1.",
+    "-0.35",
+    "12",
+    "a b",
+    "x-y",
+    "CircleNeckHalf",
+    "1e3",
+    "yes",
+    "0x1F",
+    "é-word",
+    "~",
+    "1_000",
+    ".inf",
+    "'quoted'",
+    "it's",
 ];
 
 fn random_string(rng: &mut Rng) -> String {
@@ -18,10 +38,68 @@ fn random_string(rng: &mut Rng) -> String {
         return SIMPLE[rng.below(SIMPLE.len())].to_string();
     }
     const PIECES: &[&str] = &[
-        "a", "b", "FittedShirt", " ", "  ", ":", ": ", " #", "#", "-", "- ", "'", "\"", "\\", "\n", "\n\n", "\t", "é",
-        "日本", "\u{2028}", "\u{85}", "\u{0}", "\u{7}", "\u{FEFF}", "\u{A0}", "\u{1F600}", "1", "1.0", "1e3", "0x1F",
-        "0777", "1:30", "true", "yes", "no", "off", "null", "~", "[", "]", "{", "}", ",", "?", "!", "&", "*", "|", ">",
-        "%", "@", "`", "---", "...", "=", "<<", "2001-12-14", ".inf", "-.5", ".nan", "\r", "\r\n",
+        "a",
+        "b",
+        "FittedShirt",
+        " ",
+        "  ",
+        ":",
+        ": ",
+        " #",
+        "#",
+        "-",
+        "- ",
+        "'",
+        "\"",
+        "\\",
+        "\n",
+        "\n\n",
+        "\t",
+        "é",
+        "日本",
+        "\u{2028}",
+        "\u{85}",
+        "\u{0}",
+        "\u{7}",
+        "\u{FEFF}",
+        "\u{A0}",
+        "\u{1F600}",
+        "1",
+        "1.0",
+        "1e3",
+        "0x1F",
+        "0777",
+        "1:30",
+        "true",
+        "yes",
+        "no",
+        "off",
+        "null",
+        "~",
+        "[",
+        "]",
+        "{",
+        "}",
+        ",",
+        "?",
+        "!",
+        "&",
+        "*",
+        "|",
+        ">",
+        "%",
+        "@",
+        "`",
+        "---",
+        "...",
+        "=",
+        "<<",
+        "2001-12-14",
+        ".inf",
+        "-.5",
+        ".nan",
+        "\r",
+        "\r\n",
     ];
     match rng.below(10) {
         0 => {

@@ -140,7 +140,8 @@ fn load_space(file: Option<&str>) -> Result<(garmentcode::DesignSpace, String), 
     let base = Design::design_space();
     let Some(file) = file else { return Ok((base, "built-in".into())) };
     let text = std::fs::read_to_string(file).map_err(|e| CliError::Input(format!("{file}: cannot read the design space: {e}")))?;
-    let space = garmentcode::DesignSpace::from_yaml(&text, file, &base).map_err(|e| CliError::Input(format!("invalid design space: {e}")))?;
+    let space =
+        garmentcode::DesignSpace::from_yaml(&text, file, &base).map_err(|e| CliError::Input(format!("invalid design space: {e}")))?;
     Ok((space, file.to_string()))
 }
 
@@ -365,7 +366,9 @@ fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<
         None => match sampler.draw_in(&mut arena, index) {
             Outcome::Accepted(s) => s.attempt,
             Outcome::Exhausted { .. } => {
-                return Err(CliError::Rejected(format!("{name}: every one of {MAX_ATTEMPTS} designs was rejected; replay one with --replay {index}:ATTEMPT")));
+                return Err(CliError::Rejected(format!(
+                    "{name}: every one of {MAX_ATTEMPTS} designs was rejected; replay one with --replay {index}:ATTEMPT"
+                )));
             }
         },
     };
@@ -382,7 +385,8 @@ fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<
         Ok(built) => {
             set.add("specification.json", built.pattern.to_json().map_err(|e| CliError::Failed(e.to_string()))?);
             if opts.formats.svg || opts.formats.png {
-                crate::commands::add_drawings(&mut set, &built.pattern, opts.formats.png, garmentcode::draw::Layout::Placed).map_err(|e| CliError::Failed(e.to_string()))?;
+                crate::commands::add_drawings(&mut set, &built.pattern, opts.formats.png, garmentcode::draw::Layout::Placed)
+                    .map_err(|e| CliError::Failed(e.to_string()))?;
             }
             set.add("checks.json", built.checks.to_json());
         }

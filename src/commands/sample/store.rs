@@ -3,8 +3,8 @@
 //! each sample (`sample_info.json`) that lets a rerun skip finished samples and
 //! still summarise the whole dataset.
 
-use garmentcode::{Choice, Params};
 use garmentcode::params::DesignWriter;
+use garmentcode::{Choice, Params};
 use garments::sample::{DatasetSampler, GarmentType, Outcome, Reason, Sample, sample_name};
 use serde_json::{Value, json};
 use std::fs;
@@ -112,8 +112,9 @@ impl<'a> Settings<'a> {
         with_pants.meta.bottom = Some(garments::design::BottomKind::Pants);
         let mut without = garments::Design::defaults();
         without.meta.bottom = None;
-        let body_files =
-            (0..sampler.bodies().len()).map(|b| [sampler.body_for(b, &without).to_yaml(), sampler.body_for(b, &with_pants).to_yaml()]).collect();
+        let body_files = (0..sampler.bodies().len())
+            .map(|b| [sampler.body_for(b, &without).to_yaml(), sampler.body_for(b, &with_pants).to_yaml()])
+            .collect();
         Settings { sampler, fingerprint: fingerprint(sampler), formats, writer: DesignWriter::new(sampler.space()), body_files }
     }
 }
@@ -146,13 +147,17 @@ pub fn make(dir: &Path, s: &Settings, arena: &mut garmentcode::Arena, index: u64
     let body_name = |i: usize| sampler.bodies()[i].name.clone();
     match sampler.draw_in(arena, index) {
         Outcome::Exhausted { index, rejections } => {
-            let rejections = rejections.into_iter().map(|r| RejectionRecord { attempt: r.attempt, body: body_name(r.body), reason: r.reason, message: r.message }).collect();
+            let rejections = rejections
+                .into_iter()
+                .map(|r| RejectionRecord { attempt: r.attempt, body: body_name(r.body), reason: r.reason, message: r.message })
+                .collect();
             Ok(Record { index, accepted: None, rejections })
         }
         Outcome::Accepted(sample) => {
             let record = record_of(sampler, &sample);
             let files = files_of(s, &sample, &record)?;
-            write_folder(dir, &sample_name(index), &files).map_err(|e| format!("cannot write {}: {e}", dir.join(sample_name(index)).display()))?;
+            write_folder(dir, &sample_name(index), &files)
+                .map_err(|e| format!("cannot write {}: {e}", dir.join(sample_name(index)).display()))?;
             Ok(record)
         }
     }
@@ -175,7 +180,12 @@ fn record_of(sampler: &DatasetSampler, sample: &Sample) -> Record {
     let rejections = sample
         .rejections
         .iter()
-        .map(|r| RejectionRecord { attempt: r.attempt, body: sampler.bodies()[r.body].name.clone(), reason: r.reason, message: r.message.clone() })
+        .map(|r| RejectionRecord {
+            attempt: r.attempt,
+            body: sampler.bodies()[r.body].name.clone(),
+            reason: r.reason,
+            message: r.message.clone(),
+        })
         .collect();
     Record { index: sample.index, accepted: Some(accepted), rejections }
 }
@@ -191,7 +201,10 @@ fn files_of(s: &Settings, sample: &Sample, record: &Record) -> Result<Vec<(Strin
     }
     let opts = garmentcode::draw::DrawOptions::default();
     if s.formats.svg {
-        files.push((format!("{name}_pattern.svg"), garmentcode::draw::to_svg(pattern, &opts).map_err(|e| fail("SVG drawing", e))?.into_bytes()));
+        files.push((
+            format!("{name}_pattern.svg"),
+            garmentcode::draw::to_svg(pattern, &opts).map_err(|e| fail("SVG drawing", e))?.into_bytes(),
+        ));
     }
     if s.formats.png {
         files.push((format!("{name}_pattern.png"), garmentcode::draw::to_png(pattern, &opts).map_err(|e| fail("PNG drawing", e))?));
@@ -214,9 +227,8 @@ fn write_folder(dir: &Path, name: &str, files: &[(String, Vec<u8>)]) -> io::Resu
         }
         fs::remove_dir_all(&tmp).and_then(|_| fs::create_dir(&tmp))
     });
-    let result = created
-        .and_then(|_| files.iter().try_for_each(|(f, bytes)| fs::write(tmp.join(f), bytes)))
-        .and_then(|_| fs::rename(&tmp, &target));
+    let result =
+        created.and_then(|_| files.iter().try_for_each(|(f, bytes)| fs::write(tmp.join(f), bytes))).and_then(|_| fs::rename(&tmp, &target));
     if result.is_err() {
         let _ = fs::remove_dir_all(&tmp);
         if target.join(INFO).is_file() {

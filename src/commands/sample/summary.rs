@@ -103,15 +103,14 @@ pub fn properties(about: &About, records: &[Record]) -> String {
         ("examples", map(examples)),
         (
             "inspect",
-            s("garmentcode sample --seed SEED --replay INDEX:ATTEMPT --out DIR (with the same --design-space and --bodies) rebuilds one attempt"),
+            s(
+                "garmentcode sample --seed SEED --replay INDEX:ATTEMPT --out DIR (with the same --design-space and --bodies) rebuilds one attempt",
+            ),
         ),
     ]);
 
-    let mut top = vec![
-        ("generator", s(&format!("garmentcode {}", env!("CARGO_PKG_VERSION")))),
-        ("seed", int(about.seed)),
-        ("count", int(about.n)),
-    ];
+    let mut top =
+        vec![("generator", s(&format!("garmentcode {}", env!("CARGO_PKG_VERSION")))), ("seed", int(about.seed)), ("count", int(about.n))];
     if let Some((i, k)) = about.shard {
         top.push(("shard", s(&format!("{i}/{k}"))));
     }

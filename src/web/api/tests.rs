@@ -73,7 +73,10 @@ fn the_page_and_its_files_are_served() {
 
 #[test]
 fn pattern_of_a_design_on_a_body() {
-    let (status, r) = post("/api/pattern", json!({ "design": { "meta.upper": "Shirt", "sleeve.sleeveless": false }, "body": "mean_female", "name": "tee" }));
+    let (status, r) = post(
+        "/api/pattern",
+        json!({ "design": { "meta.upper": "Shirt", "sleeve.sleeveless": false }, "body": "mean_female", "name": "tee" }),
+    );
     assert_eq!(status, 200);
     assert_eq!(r["ok"], true, "{r}");
     assert_eq!(r["name"], "tee");
@@ -89,7 +92,9 @@ fn pattern_of_a_design_on_a_body() {
     let design = garments::builtin::design("t-shirt").unwrap();
     let body = garments::builtin::body("mean_female").unwrap();
     let direct = garments::build::build(&design, &body, "tee").unwrap().pattern.to_json().unwrap();
-    let text = pattern_text(&json!({ "design": { "meta.upper": "Shirt", "sleeve.sleeveless": false }, "body": "mean_female", "name": "tee" })).unwrap();
+    let text =
+        pattern_text(&json!({ "design": { "meta.upper": "Shirt", "sleeve.sleeveless": false }, "body": "mean_female", "name": "tee" }))
+            .unwrap();
     assert!(text.ends_with(&format!("\"specification\":{direct}}}")));
 }
 
@@ -122,7 +127,8 @@ fn values_outside_ranges_are_refused_with_path_and_range() {
     assert_eq!(status, 400);
     let e = r["error"].as_str().unwrap();
     assert!(e.contains("design.shirt.length") && e.contains("[0.5, 3.5]"), "{e}");
-    let (status, r) = post("/api/pattern", json!({ "design": { "meta.upper": "Cape", "collar.fc_angle": 90.5, "nope.x": 1, "pants.length": [1] } }));
+    let (status, r) =
+        post("/api/pattern", json!({ "design": { "meta.upper": "Cape", "collar.fc_angle": 90.5, "nope.x": 1, "pants.length": [1] } }));
     assert_eq!(status, 400);
     let problems: Vec<&str> = r["problems"].as_array().unwrap().iter().map(|p| p.as_str().unwrap()).collect();
     assert_eq!(problems.len(), 4, "{problems:?}");
@@ -149,7 +155,10 @@ fn a_design_the_library_refuses_is_explained() {
 #[test]
 fn warnings_of_the_reference_checks_are_reported() {
     // A shirt longer than the body: too long for the floor.
-    let (status, r) = post("/api/pattern", json!({ "design": { "meta.upper": "Shirt", "shirt.length": 3.5 }, "body": { "measurements": { "height": 120.0 } } }));
+    let (status, r) = post(
+        "/api/pattern",
+        json!({ "design": { "meta.upper": "Shirt", "shirt.length": 3.5 }, "body": { "measurements": { "height": 120.0 } } }),
+    );
     assert_eq!(status, 200);
     assert_eq!(r["ok"], true, "{r}");
     let w: Vec<&str> = r["warnings"].as_array().unwrap().iter().map(|x| x.as_str().unwrap()).collect();
@@ -235,7 +244,10 @@ fn files_and_zip_hold_every_file() {
     assert!(r.headers.iter().any(|(n, v)| *n == "Content-Disposition" && v.contains("top.zip")));
     let entries = zip::read_stored(&r.body).unwrap();
     let names: Vec<&str> = entries.iter().map(|(n, _)| n.as_str()).collect();
-    assert_eq!(names, ["top/design_params.yaml", "top/body_measurements.yaml", "top/specification.json", "top/pattern.svg", "top/checks.json"]);
+    assert_eq!(
+        names,
+        ["top/design_params.yaml", "top/body_measurements.yaml", "top/specification.json", "top/pattern.svg", "top/checks.json"]
+    );
     assert_eq!(entries[2].1, f["files"]["specification.json"].as_str().unwrap().as_bytes());
     // A refused design still has its input files, and the reason.
     let (_, f) = post("/api/files", json!({ "design": {} }));
@@ -275,8 +287,17 @@ fn malformed_requests_get_4xx_with_a_message() {
 
 #[test]
 fn extreme_bodies_are_answered_not_panicked() {
-    for m in [json!({ "height": 1e300 }), json!({ "waist": 1e-300 }), json!({ "shoulder_w": 1000.0, "neck_w": 900.0 }), json!({ "arm_length": 0.001 })] {
-        for design in [json!({ "meta.upper": "Shirt", "sleeve.sleeveless": false }), json!({ "meta.bottom": "Pants" }), json!({ "meta.bottom": "SkirtCircle", "meta.wb": "FittedWB" })] {
+    for m in [
+        json!({ "height": 1e300 }),
+        json!({ "waist": 1e-300 }),
+        json!({ "shoulder_w": 1000.0, "neck_w": 900.0 }),
+        json!({ "arm_length": 0.001 }),
+    ] {
+        for design in [
+            json!({ "meta.upper": "Shirt", "sleeve.sleeveless": false }),
+            json!({ "meta.bottom": "Pants" }),
+            json!({ "meta.bottom": "SkirtCircle", "meta.wb": "FittedWB" }),
+        ] {
             let (status, r) = post("/api/pattern", json!({ "design": design, "body": { "measurements": m } }));
             assert!(status == 200 || status == 400, "{status}: {r}");
             assert!(r["ok"].is_boolean());

@@ -104,14 +104,7 @@ impl Dcsrch {
     /// calls of the MINPACK routine (the first one only initialises). Returns
     /// the accepted step and phi there, or `None` on any warning, error,
     /// non-finite step or iteration limit (scipy then falls back to wolfe2).
-    pub fn search(
-        &mut self,
-        lf: &mut impl LineFunction,
-        alpha1: f64,
-        phi0: f64,
-        derphi0: f64,
-        maxiter: usize,
-    ) -> Option<(f64, f64)> {
+    pub fn search(&mut self, lf: &mut impl LineFunction, alpha1: f64, phi0: f64, derphi0: f64, maxiter: usize) -> Option<(f64, f64)> {
         let mut stp = alpha1;
         let mut f = phi0;
         let mut g = derphi0;
@@ -127,11 +120,7 @@ impl Dcsrch {
                 f = lf.phi(stp);
                 g = lf.derphi(stp);
             } else {
-                return if task == Task::Convergence {
-                    Some((stp, f))
-                } else {
-                    None
-                };
+                return if task == Task::Convergence { Some((stp, f)) } else { None };
             }
         }
         None
@@ -209,15 +198,7 @@ impl Dcsrch {
             let gm = g - self.gtest;
             let mut gxm = self.gx - self.gtest;
             let mut gym = self.gy - self.gtest;
-            let mut st = StepState {
-                stx: self.stx,
-                fx: fxm,
-                dx: gxm,
-                sty: self.sty,
-                fy: fym,
-                dy: gym,
-                brackt: self.brackt,
-            };
+            let mut st = StepState { stx: self.stx, fx: fxm, dx: gxm, sty: self.sty, fy: fym, dy: gym, brackt: self.brackt };
             stp = dcstep(&mut st, stp, fm, gm, self.stmin, self.stmax);
             self.stx = st.stx;
             fxm = st.fx;
@@ -231,15 +212,8 @@ impl Dcsrch {
             self.gx = gxm + self.gtest;
             self.gy = gym + self.gtest;
         } else {
-            let mut st = StepState {
-                stx: self.stx,
-                fx: self.fx,
-                dx: self.gx,
-                sty: self.sty,
-                fy: self.fy,
-                dy: self.gy,
-                brackt: self.brackt,
-            };
+            let mut st =
+                StepState { stx: self.stx, fx: self.fx, dx: self.gx, sty: self.sty, fy: self.fy, dy: self.gy, brackt: self.brackt };
             stp = dcstep(&mut st, stp, f, g, self.stmin, self.stmax);
             self.stx = st.stx;
             self.fx = st.fx;
@@ -267,11 +241,7 @@ impl Dcsrch {
         }
         stp = clip(stp, self.stpmin, self.stpmax);
         // If no further progress is possible, let stp be the best point so far.
-        if self.brackt
-            && (stp <= self.stmin
-                || stp >= self.stmax
-                || self.stmax - self.stmin <= self.xtol * self.stmax)
-        {
+        if self.brackt && (stp <= self.stmin || stp >= self.stmax || self.stmax - self.stmin <= self.xtol * self.stmax) {
             stp = self.stx;
         }
         (stp, Task::Fg)
@@ -314,11 +284,7 @@ fn dcstep(s: &mut StepState, stp: f64, fp: f64, dp: f64, stpmin: f64, stpmax: f6
         let r = p / q;
         let stpc = stx + r * (stp - stx);
         let stpq = stx + ((dx / ((fx - fp) / (stp - stx) + dx)) / 2.0) * (stp - stx);
-        stpf = if (stpc - stx).abs() <= (stpq - stx).abs() {
-            stpc
-        } else {
-            stpc + (stpq - stpc) / 2.0
-        };
+        stpf = if (stpc - stx).abs() <= (stpq - stx).abs() { stpc } else { stpc + (stpq - stpc) / 2.0 };
         s.brackt = true;
     } else if sgnd < 0.0 {
         // Case 2: derivatives of opposite sign; the minimum is bracketed.
@@ -333,11 +299,7 @@ fn dcstep(s: &mut StepState, stp: f64, fp: f64, dp: f64, stpmin: f64, stpmax: f6
         let r = p / q;
         let stpc = stp + r * (stx - stp);
         let stpq = stp + (dp / (dp - dx)) * (stx - stp);
-        stpf = if (stpc - stp).abs() > (stpq - stp).abs() {
-            stpc
-        } else {
-            stpq
-        };
+        stpf = if (stpc - stp).abs() > (stpq - stp).abs() { stpc } else { stpq };
         s.brackt = true;
     } else if dp.abs() < dx.abs() {
         // Case 3: same sign, derivative magnitude decreases.
@@ -359,23 +321,11 @@ fn dcstep(s: &mut StepState, stp: f64, fp: f64, dp: f64, stpmin: f64, stpmax: f6
         };
         let stpq = stp + (dp / (dp - dx)) * (stx - stp);
         if s.brackt {
-            let mut v = if (stpc - stp).abs() < (stpq - stp).abs() {
-                stpc
-            } else {
-                stpq
-            };
-            v = if stp > stx {
-                py_min2(stp + 0.66 * (sty - stp), v)
-            } else {
-                py_max2(stp + 0.66 * (sty - stp), v)
-            };
+            let mut v = if (stpc - stp).abs() < (stpq - stp).abs() { stpc } else { stpq };
+            v = if stp > stx { py_min2(stp + 0.66 * (sty - stp), v) } else { py_max2(stp + 0.66 * (sty - stp), v) };
             stpf = v;
         } else {
-            let v = if (stpc - stp).abs() > (stpq - stp).abs() {
-                stpc
-            } else {
-                stpq
-            };
+            let v = if (stpc - stp).abs() > (stpq - stp).abs() { stpc } else { stpq };
             stpf = clip(v, stpmin, stpmax);
         }
     } else {
@@ -440,22 +390,14 @@ pub(crate) fn wolfe2(
         }
         let not_first_iteration = i > 0;
         if phi_a1 > phi0 + c1 * alpha1 * derphi0 || (phi_a1 >= phi_a0 && not_first_iteration) {
-            return zoom(
-                alpha0, alpha1, phi_a0, phi_a1, derphi_a0, lf, phi0, derphi0, c1, c2,
-            );
+            return zoom(alpha0, alpha1, phi_a0, phi_a1, derphi_a0, lf, phi0, derphi0, c1, c2);
         }
         let derphi_a1 = lf.derphi(alpha1);
         if derphi_a1.abs() <= -c2 * derphi0 {
-            return Some(LineSearchOk {
-                alpha: alpha1,
-                phi: phi_a1,
-                grad_at_alpha: true,
-            });
+            return Some(LineSearchOk { alpha: alpha1, phi: phi_a1, grad_at_alpha: true });
         }
         if derphi_a1 >= 0.0 {
-            return zoom(
-                alpha1, alpha0, phi_a1, phi_a0, derphi_a1, lf, phi0, derphi0, c1, c2,
-            );
+            return zoom(alpha1, alpha0, phi_a1, phi_a0, derphi_a1, lf, phi0, derphi0, c1, c2);
         }
         let alpha2 = py_min2(2.0 * alpha1, amax);
         alpha0 = alpha1;
@@ -465,11 +407,7 @@ pub(crate) fn wolfe2(
         derphi_a0 = derphi_a1;
     }
     // Iteration limit: scipy accepts the last step but reports no gradient.
-    Some(LineSearchOk {
-        alpha: alpha1,
-        phi: phi_a1,
-        grad_at_alpha: false,
-    })
+    Some(LineSearchOk { alpha: alpha1, phi: phi_a1, grad_at_alpha: false })
 }
 
 /// scipy's `_zoom` (Nocedal & Wright, Algorithm 3.6), at most 11 trials.
@@ -494,11 +432,7 @@ fn zoom(
     let mut i = 0;
     loop {
         let dalpha = a_hi - a_lo;
-        let (a, b) = if dalpha < 0.0 {
-            (a_hi, a_lo)
-        } else {
-            (a_lo, a_hi)
-        };
+        let (a, b) = if dalpha < 0.0 { (a_hi, a_lo) } else { (a_lo, a_hi) };
         let mut a_j = None;
         let mut cchk = 0.0;
         if i > 0 {
@@ -527,11 +461,7 @@ fn zoom(
         } else {
             let derphi_aj = lf.derphi(a_j);
             if derphi_aj.abs() <= -c2 * derphi0 {
-                return Some(LineSearchOk {
-                    alpha: a_j,
-                    phi: phi_aj,
-                    grad_at_alpha: true,
-                });
+                return Some(LineSearchOk { alpha: a_j, phi: phi_aj, grad_at_alpha: true });
             }
             if derphi_aj * (a_hi - a_lo) >= 0.0 {
                 phi_rec = phi_hi;

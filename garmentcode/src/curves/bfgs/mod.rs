@@ -75,16 +75,7 @@ struct Objective<F> {
 impl<F: FnMut(&[f64]) -> f64> Objective<F> {
     fn new(f: F, x0: &[f64]) -> Self {
         let n = x0.len();
-        Objective {
-            f,
-            x: x0.to_vec(),
-            fx: 0.0,
-            f_ok: false,
-            g: vec![0.0; n],
-            g_ok: false,
-            nfev: 0,
-            tmp: vec![0.0; n],
-        }
+        Objective { f, x: x0.to_vec(), fx: 0.0, f_ok: false, g: vec![0.0; n], g_ok: false, nfev: 0, tmp: vec![0.0; n] }
     }
 
     /// `np.array_equal(x, self.x)` test, then invalidate the caches.
@@ -192,25 +183,11 @@ fn line_search_wolfe12<F: FnMut(&[f64]) -> f64>(
             alpha1 = 1.0;
         }
     }
-    let mut line = Line {
-        obj,
-        xk,
-        pk,
-        point: vec![0.0; n],
-        last_grad: gfk.to_vec(),
-    };
+    let mut line = Line { obj, xk, pk, point: vec![0.0; n], last_grad: gfk.to_vec() };
 
     let mut dcsrch = Dcsrch::new(C1, C2, XTOL, AMIN, AMAX);
-    if let Some((alpha, phi)) = dcsrch.search(&mut line, alpha1, old_fval, derphi0, DCSRCH_MAXITER)
-    {
-        return Some((
-            LineSearchOk {
-                alpha,
-                phi,
-                grad_at_alpha: true,
-            },
-            line.last_grad,
-        ));
+    if let Some((alpha, phi)) = dcsrch.search(&mut line, alpha1, old_fval, derphi0, DCSRCH_MAXITER) {
+        return Some((LineSearchOk { alpha, phi, grad_at_alpha: true }, line.last_grad));
     }
     // Fallback (scipy passes only c1, c2 and amax; the initial step is the same).
     let ls = wolfe2(&mut line, old_fval, derphi0, alpha1, C1, C2, AMAX)?;
@@ -261,9 +238,7 @@ pub fn minimize_bfgs(f: impl FnMut(&[f64]) -> f64, x0: &[f64]) -> BfgsResult {
 
     while gnorm > GTOL && k < maxiter {
         let pk: Vec<f64> = matvec(&hk, &gfk, n).into_iter().map(|v| -v).collect();
-        let Some((ls, gfkp1)) =
-            line_search_wolfe12(&mut obj, &xk, &pk, &gfk, old_fval, old_old_fval)
-        else {
+        let Some((ls, gfkp1)) = line_search_wolfe12(&mut obj, &xk, &pk, &gfk, old_fval, old_old_fval) else {
             line_search_failed = true;
             break;
         };
@@ -275,11 +250,7 @@ pub fn minimize_bfgs(f: impl FnMut(&[f64]) -> f64, x0: &[f64]) -> BfgsResult {
         for (x, s) in xk.iter_mut().zip(&sk) {
             *x += s;
         }
-        let gfkp1 = if ls.grad_at_alpha {
-            gfkp1
-        } else {
-            obj.grad(&xk).to_vec()
-        };
+        let gfkp1 = if ls.grad_at_alpha { gfkp1 } else { obj.grad(&xk).to_vec() };
         let yk: Vec<f64> = gfkp1.iter().zip(&gfk).map(|(a, b)| a - b).collect();
         gfk = gfkp1;
         k += 1;
@@ -299,11 +270,7 @@ pub fn minimize_bfgs(f: impl FnMut(&[f64]) -> f64, x0: &[f64]) -> BfgsResult {
         // BFGS inverse-Hessian update H = (I - rho s y^T) H (I - rho y s^T) + rho s s^T,
         // with scipy's guard rho = 1000 when y.s == 0.
         let rhok_inv = dot(&yk, &sk);
-        let rhok = if rhok_inv == 0.0 {
-            1000.0
-        } else {
-            1.0 / rhok_inv
-        };
+        let rhok = if rhok_inv == 0.0 { 1000.0 } else { 1.0 / rhok_inv };
         let eye = |i: usize, j: usize| if i == j { 1.0 } else { 0.0 };
         let mut a1 = vec![0.0; n * n];
         let mut a2 = vec![0.0; n * n];
@@ -322,16 +289,8 @@ pub fn minimize_bfgs(f: impl FnMut(&[f64]) -> f64, x0: &[f64]) -> BfgsResult {
         hk = h_new;
     }
 
-    let success = !line_search_failed
-        && k < maxiter
-        && !(gnorm.is_nan() || old_fval.is_nan() || xk.iter().any(|v| v.is_nan()));
-    BfgsResult {
-        x: xk,
-        fun: old_fval,
-        nit: k,
-        nfev: obj.nfev,
-        success,
-    }
+    let success = !line_search_failed && k < maxiter && !(gnorm.is_nan() || old_fval.is_nan() || xk.iter().any(|v| v.is_nan()));
+    BfgsResult { x: xk, fun: old_fval, nit: k, nfev: obj.nfev, success }
 }
 
 /// Unit tangent of the quadratic Bezier `p0 -> p1 -> p2` at `t` (0 or 1) as
@@ -373,11 +332,7 @@ pub fn tangent_objective(cp: [f64; 2], t0: Option<[f64; 2]>, t1: Option<[f64; 2]
 /// that `curve_from_tangents` obtains: BFGS on [`tangent_objective`] from
 /// `x0` (the call site's `initial_guess`, default `[0.5, 0]`). `t0`/`t1` are
 /// the target tangents already in the edge frame and normalised.
-pub fn fit_quadratic_tangents(
-    t0: Option<[f64; 2]>,
-    t1: Option<[f64; 2]>,
-    x0: [f64; 2],
-) -> [f64; 2] {
+pub fn fit_quadratic_tangents(t0: Option<[f64; 2]>, t1: Option<[f64; 2]>, x0: [f64; 2]) -> [f64; 2] {
     let r = minimize_bfgs(|x| tangent_objective([x[0], x[1]], t0, t1), &x0);
     [r.x[0], r.x[1]]
 }
@@ -395,11 +350,7 @@ pub fn quadratic_from_two_tangents(t0: [f64; 2], t1: [f64; 2]) -> Option<[f64; 2
     }
     let a = t1[1] / det;
     let b = -t0[1] / det;
-    if a > 0.0 && b > 0.0 {
-        Some([a * t0[0], a * t0[1]])
-    } else {
-        None
-    }
+    if a > 0.0 && b > 0.0 { Some([a * t0[0], a * t0[1]]) } else { None }
 }
 
 #[cfg(test)]
@@ -408,15 +359,9 @@ mod tests {
 
     #[test]
     fn quadratic_bowl() {
-        let r = minimize_bfgs(
-            |x| (x[0] - 1.0).powi(2) + 10.0 * (x[1] + 2.0).powi(2),
-            &[0.0, 0.0],
-        );
+        let r = minimize_bfgs(|x| (x[0] - 1.0).powi(2) + 10.0 * (x[1] + 2.0).powi(2), &[0.0, 0.0]);
         assert!(r.success);
-        assert!(
-            (r.x[0] - 1.0).abs() < 1e-5 && (r.x[1] + 2.0).abs() < 1e-5,
-            "{r:?}"
-        );
+        assert!((r.x[0] - 1.0).abs() < 1e-5 && (r.x[1] + 2.0).abs() < 1e-5, "{r:?}");
     }
 
     #[test]

@@ -76,11 +76,7 @@ pub(crate) fn matvec(m: &[f64], v: &[f64], n: usize) -> Vec<f64> {
     (0..n)
         .map(|r| {
             let row = &m[r * n..(r + 1) * n];
-            if n == 2 {
-                dot2_gemv(row[0], v[0], row[1], v[1])
-            } else {
-                dot(row, v)
-            }
+            if n == 2 { dot2_gemv(row[0], v[0], row[1], v[1]) } else { dot(row, v) }
         })
         .collect()
 }
@@ -122,10 +118,7 @@ impl C {
     }
     /// CPython `_Py_c_prod`.
     pub fn mul(self, o: C) -> C {
-        C::new(
-            self.re * o.re - self.im * o.im,
-            self.re * o.im + self.im * o.re,
-        )
+        C::new(self.re * o.re - self.im * o.im, self.re * o.im + self.im * o.re)
     }
     /// CPython `_Py_c_quot` (Smith's algorithm); `None` for division by zero
     /// (Python raises `ZeroDivisionError`).
@@ -138,17 +131,11 @@ impl C {
             }
             let ratio = b.im / b.re;
             let denom = b.re + b.im * ratio;
-            Some(C::new(
-                (self.re + self.im * ratio) / denom,
-                (self.im - self.re * ratio) / denom,
-            ))
+            Some(C::new((self.re + self.im * ratio) / denom, (self.im - self.re * ratio) / denom))
         } else if abs_bi >= abs_br {
             let ratio = b.re / b.im;
             let denom = b.re * ratio + b.im;
-            Some(C::new(
-                (self.re * ratio + self.im) / denom,
-                (self.im * ratio - self.re) / denom,
-            ))
+            Some(C::new((self.re * ratio + self.im) / denom, (self.im * ratio - self.re) / denom))
         } else {
             Some(C::new(f64::NAN, f64::NAN))
         }

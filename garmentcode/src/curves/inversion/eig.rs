@@ -80,8 +80,7 @@ mod tests {
                 }
             }
             let d = [1.0, 3e-3, 1e-5, -2e-7, 1e-9];
-            let a: [[f64; 5]; 5] =
-                std::array::from_fn(|i| std::array::from_fn(|j| (0..5).map(|k| q[i][k] * d[k] * q[j][k]).sum()));
+            let a: [[f64; 5]; 5] = std::array::from_fn(|i| std::array::from_fn(|j| (0..5).map(|k| q[i][k] * d[k] * q[j][k]).sum()));
             let (l, v) = jacobi(&a);
             let mut ls = l;
             ls.sort_by(|x, y| y.partial_cmp(x).unwrap());

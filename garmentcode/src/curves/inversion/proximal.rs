@@ -168,11 +168,7 @@ const SMALL: usize = 24;
 
 /// Solve the step QP with the given rows (|k|, sign(k) grad k) packed into `M` slots, in
 /// sample order (so the dual active-set method adds them in the same order either way).
-fn solve_rows<const M: usize>(
-    ginv: &qp::MatN,
-    g0: &[f64; qp::N],
-    rows: &[Option<(f64, [f64; NX])>; NS],
-) -> Option<[f64; qp::N]> {
+fn solve_rows<const M: usize>(ginv: &qp::MatN, g0: &[f64; qp::N], rows: &[Option<(f64, [f64; NX])>; NS]) -> Option<[f64; qp::N]> {
     let mut ca = [[0.0; qp::N]; M];
     let mut cb = [1.0; M];
     for (slot, (k, g)) in rows.iter().flatten().enumerate() {

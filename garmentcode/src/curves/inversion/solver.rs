@@ -79,10 +79,7 @@ fn dirs(w: &[f64; 4], d: V2) -> [V2; NX] {
 }
 
 fn comb(w: &[f64; 4], p: &[V2; 4]) -> V2 {
-    [
-        w[0] * p[0][0] + w[1] * p[1][0] + w[2] * p[2][0] + w[3] * p[3][0],
-        w[0] * p[0][1] + w[1] * p[1][1] + w[2] * p[2][1] + w[3] * p[3][1],
-    ]
+    [w[0] * p[0][0] + w[1] * p[1][0] + w[2] * p[2][0] + w[3] * p[3][0], w[0] * p[0][1] + w[1] * p[1][1] + w[2] * p[2][1] + w[3] * p[3][1]]
 }
 
 /// Value, gradient and Hessian (w.r.t. a) of |a/|a| - t|^2 = 2 - 2 t.a/|a| (t unit).
@@ -169,8 +166,7 @@ impl Sample {
             for j in i..NX {
                 let ddc = cross(e1[i], e2[j]) + cross(e1[j], e2[i]);
                 let ddn = 2.0 * dot(e1[i], e1[j]);
-                h[i][j] = ddc * r3 - 1.5 * r5 * (dc[i] * dn[j] + dc[j] * dn[i]) - 1.5 * c * r5 * ddn
-                    + 3.75 * c * r7 * dn[i] * dn[j];
+                h[i][j] = ddc * r3 - 1.5 * r5 * (dc[i] * dn[j] + dc[j] * dn[i]) - 1.5 * c * r5 * ddn + 3.75 * c * r7 * dn[i] * dn[j];
                 h[j][i] = h[i][j];
             }
         }
@@ -509,13 +505,7 @@ impl Setup {
     /// Curvature constraints at p (with refined peaks for `Bound::Envelope`), values and
     /// gradients.
     pub(crate) fn constraints(&self, p: &[V2; 4], bound: Bound) -> Cons {
-        let mut c = Cons {
-            peaks: [self.grid[0]; NPEAK],
-            npeak: 0,
-            kap: [0.0; NC],
-            grad: [[0.0; NX]; NC],
-            enabled: [false; NC],
-        };
+        let mut c = Cons { peaks: [self.grid[0]; NPEAK], npeak: 0, kap: [0.0; NC], grad: [[0.0; NX]; NC], enabled: [false; NC] };
         for k in 0..NS {
             let (v, g) = self.grid[k].curv_grad(p);
             c.kap[k] = v;
