@@ -13,6 +13,23 @@ use crate::math::{Vec2, norm, rotate2d};
 use std::ops::{Deref, DerefMut};
 
 /// An ordered list of edges.
+///
+/// ```
+/// use garmentcode::{Arena, EdgeSeq, Vec2};
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 10.0), Vec2::new(20.0, 10.0), Vec2::new(20.0, 0.0)];
+/// let outline = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// assert!(outline.is_loop(&a));
+/// assert_eq!((outline.len(), outline.length(&a)), (4, 60.0));
+/// // A slice is a new list over the same edges; `copy` copies the geometry.
+/// let top = outline.slice(1, 2);
+/// let moved = top.copy(&mut a);
+/// moved.translate_by(&mut a, Vec2::new(0.0, 5.0));
+/// assert_eq!(top.shortcut(&a), (Vec2::new(0.0, 10.0), Vec2::new(20.0, 10.0)));
+/// assert_eq!(moved.shortcut(&a), (Vec2::new(0.0, 15.0), Vec2::new(20.0, 15.0)));
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct EdgeSeq(pub Vec<EdgeId>);
 
