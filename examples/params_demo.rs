@@ -3,7 +3,9 @@
 //!
 //! `cargo run --example params_demo`
 
-use garmentcode::params::{Sampler, read_design, sample_rng, write_design};
+use garmentcode::{Sampler, sample_rng};
+
+use garmentcode::io::{read_design, write_design};
 use garmentcode::{Choice, Params};
 
 /// How the hem is finished.

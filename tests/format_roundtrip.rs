@@ -3,7 +3,7 @@
 //! pattern (bit-exact numbers).
 
 use garmentcode::Pattern;
-use garmentcode::pattern::{Severity, validate};
+use garmentcode::{Severity, validate};
 use std::path::PathBuf;
 
 fn cases() -> Vec<PathBuf> {
@@ -48,7 +48,7 @@ fn reference_specs_have_no_errors() {
 
 #[test]
 fn self_intersection_verdicts_agree_with_the_reference() {
-    use garmentcode::pattern::ProblemKind;
+    use garmentcode::ProblemKind;
     let mut flagged = 0;
     for case in cases() {
         let spec = case.join("specification.json");

@@ -7,12 +7,13 @@
 //! stitches. Placement (translate, rotate about the block's top centre, mirror),
 //! bounding boxes, lengths, labels and assembly are defined once here on [`Node`].
 
+use crate::arena::StitchRule;
 use crate::arena::{Arena, InterfaceId, PanelId};
 use crate::error::{Error, Result};
 use crate::math::Vec3;
 use crate::pattern::Pattern;
 use crate::rotation::Rotation;
-use crate::stitch::{StitchRecord, StitchRule};
+use crate::stitch::StitchRecord;
 
 /// What a part is: a single panel or a component with sub-parts.
 #[derive(Clone, Copy)]

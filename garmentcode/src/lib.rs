@@ -17,43 +17,60 @@
 // the crate's own tests and examples too.
 extern crate self as garmentcode;
 
-pub mod arc;
-pub mod arena;
-pub mod bezier;
-pub mod body;
-pub mod compare;
-pub mod component;
+// The paper's concepts. Modules are private: their public items are re-exported
+// below, each under one path.
+mod arc;
+mod arena;
+mod bezier;
+mod body;
+mod component;
+mod edge;
+mod error;
+mod interface;
+mod memo;
+mod panel;
+mod params;
+mod pattern;
+mod rotation;
+mod seq;
+mod stitch;
+
+// Function namespaces.
 pub mod curves;
-pub mod draw;
-pub mod edge;
-pub mod error;
-pub mod interface;
 pub mod intersect;
 pub mod math;
-mod memo;
 pub mod ops;
-pub mod panel;
-pub mod params;
-pub mod pattern;
-pub mod rotation;
-pub mod seq;
 pub mod slots;
-pub mod stitch;
-pub mod svgpath;
-pub mod yaml;
 
-pub use arena::{Arena, EdgeId, InterfaceId, PanelId, VertexId};
-pub use body::Body;
-pub use component::{Align, Component, Interfaces, Node, Part, PartExt, Parts, Slot, SlotExt};
-pub use edge::{Curve, Edge};
+// Input/output and drawings, apart from geometry.
+pub mod draw;
+pub mod io;
+
+// Code that exists only to reproduce the reference bit for bit.
+pub mod parity;
+
+pub use arc::SvgArc;
+pub use arena::{Arena, EdgeId, EdgeSeq, InterfaceId, PanelId, Ruffle, StitchRule, VertexId};
+pub use bezier::Bezier;
+pub use body::{Body, BodyError, Derived};
+pub use component::{Align, Component, Interfaces, Node, Part, PartExt, Parts, Slot, SlotExt, assemble};
+pub use edge::{Curve, Edge, Segment};
 pub use error::{Error, Result};
-pub use interface::{Gather, Ruffle};
-pub use math::{Vec2, Vec3};
-pub use params::{Choice, DesignSpace, Params};
-pub use pattern::Pattern;
+pub use interface::Gather;
+pub use params::sample::{Sampler, below, sample_rng};
+pub use params::space::DesignSpace;
+pub use params::spec::{Kind, ParamSpec, Range, Value};
+pub use params::{Choice, ParamValue, Params, join_path};
+pub use pattern::order::panel_order;
+pub use pattern::validate::{Problem, ProblemKind, Severity, validate};
+pub use pattern::{Curvature, EdgeSpec, PanelSpec, Pattern, Properties, StitchSide, StitchSpec};
 pub use rotation::Rotation;
-pub use seq::EdgeSeq;
-pub use stitch::StitchRule;
+pub use stitch::StitchRecord;
+
+/// 2D point or vector (panel-local coordinates, centimetres).
+pub type Vec2 = glam::DVec2;
+/// 3D point or vector (world coordinates, centimetres).
+pub type Vec3 = glam::DVec3;
 
 /// Derive macros: `#[derive(Params)]`, `#[derive(Choice)]`, `#[derive(Component)]`
 /// and `#[component]`.
@@ -63,8 +80,8 @@ pub use garmentcode_derive::{Choice, Component, Params, component};
 /// Paths used by the derive macros' generated code. Not a public API.
 #[doc(hidden)]
 pub mod __private {
-    pub use crate::arena::{Arena, InterfaceId, PanelId};
+    pub use crate::arena::{Arena, InterfaceId, PanelId, StitchRule};
     pub use crate::component::{Component, Interfaces, Node, Part, Parts, Slot};
-    pub use crate::params::{Choice, Kind, ParamSpec, ParamValue, Params, Range, Value, join_path};
-    pub use crate::stitch::StitchRule;
+    pub use crate::params::spec::{Kind, ParamSpec, Range, Value};
+    pub use crate::params::{Choice, ParamValue, Params, join_path};
 }

@@ -6,8 +6,8 @@ use garmentcode::curves::{match_tangents, quadratic_with_extremum};
 use garmentcode::ops::{
     DartSize, cut_corner, cut_into_edge, cut_many_into_edge, dart_shape, distribute_horizontally, distribute_y, side_with_cut,
 };
-use garmentcode::pattern::{Severity, validate};
 use garmentcode::{Align, Arena, Curve, EdgeSeq, Gather, InterfaceId, PanelId, PartExt, Pattern, Rotation, StitchRule, Vec2, Vec3};
+use garmentcode::{Severity, validate};
 
 fn v2(x: f64, y: f64) -> Vec2 {
     Vec2::new(x, y)
@@ -262,7 +262,7 @@ fn tiers_rows_and_tangent_matching() {
     let g = a.geom(hem);
     let cps = [g.start, g.start + v2(20.0, -4.0), g.end + v2(-20.0, -4.0), g.end];
     let fitted = match_tangents(cps, v2(1.0, -0.3).normalize(), v2(1.0, 0.3).normalize(), 64.0);
-    let b = garmentcode::bezier::Bezier::Cubic(fitted);
+    let b = garmentcode::Bezier::Cubic(fitted);
     assert!(close(b.length(), 64.0, 0.01), "fitted length {}", b.length());
     assert!(close(fitted[0].distance(g.start), 0.0, 1e-9), "the start stays put");
     a.set_pos(a.end(hem), fitted[3]);

@@ -14,7 +14,9 @@
 use std::sync::OnceLock;
 use std::time::Instant;
 
-use garmentcode::params::{Sampler, read_design, sample_rng, write_design};
+use garmentcode::{Sampler, sample_rng};
+
+use garmentcode::io::{read_design, write_design};
 use garmentcode::{Arena, Body, DesignSpace, Params};
 use garments::Design;
 

@@ -2,7 +2,7 @@
 
 use garmentcode::Body;
 use garmentcode::Params;
-use garmentcode::params::read_design;
+use garmentcode::io::read_design;
 
 use crate::Design;
 

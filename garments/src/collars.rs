@@ -7,7 +7,7 @@ use crate::circle_skirt::CircleArcPanel;
 use crate::common::{register, v2, v3};
 use crate::design::{CollarStyle, NeckShape};
 use crate::shapes::{self, NeckArgs};
-use garmentcode::bezier::Bezier;
+use garmentcode::Bezier;
 use garmentcode::curves::match_tangents;
 use garmentcode::{Arena, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, Node, PanelId, Part, Result, Rotation, StitchRule};
 

@@ -5,9 +5,9 @@
 //! rejects are rejected for the same reason; and the validity checks
 //! (`checks.json`) give the same verdicts.
 
-use garmentcode::compare::{CompareOptions, compare_spec_texts};
-use garmentcode::params::read_design;
+use garmentcode::io::read_design;
 use garmentcode::{Arena, Params};
+use garmentcode_compare::{CompareOptions, compare_spec_texts};
 use garments::build::{BuildError, build_in};
 use garments::meta::check_param_combinations;
 use garments::{Design, builtin};
