@@ -10,7 +10,7 @@
 //! matter); perimeters are compared; stitches are an unordered set of unordered pairs of
 //! sides identified by panel name and edge geometry, plus their flags. Sleeve, sleeve-cuff
 //! and hood panels ("chaotic" panels, built in the reference from a numerically chaotic
-//! fit) and the stitches touching them are judged by the chaotic rule (see [`chaos`]).
+//! fit) and the stitches touching them are judged by the chaotic rule (see `chaos.rs`).
 //!
 //! The port follows the script statement by statement, including its early exits (which
 //! make reported deviations lower bounds), its iteration orders, and CPython's float

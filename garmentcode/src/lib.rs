@@ -10,6 +10,24 @@
 //! All geometry of one garment lives in an [`Arena`]; panels, edges and interfaces
 //! are small copyable ids into it, so sharing and in-place edits behave as in the
 //! reference implementation (pygarment), whose numbers this crate reproduces.
+//!
+//! ## Layout
+//!
+//! - The paper's concepts are types at the crate root: [`Edge`]/[`Curve`], [`Bezier`],
+//!   [`SvgArc`], [`EdgeSeq`], panels ([`PanelId`]), [`Component`] and its [`slots`],
+//!   interfaces ([`InterfaceId`], [`Gather`]), [`StitchRule`], [`Params`] and
+//!   [`DesignSpace`], [`Body`], [`Pattern`], all stored in the [`Arena`].
+//! - Function namespaces: [`ops`] (the paper's operators), [`curves`] (curve
+//!   helpers), [`intersect`] (outline checks), [`math`].
+//! - Apart from geometry: [`io`] (design files and design spaces, JSON Schema) and
+//!   [`draw`] (SVG; PNG behind the `png` feature, on by default).
+//! - [`parity`]: code that exists only to match the reference bit for bit (scipy's
+//!   BFGS, svgpathtools with numpy/LAPACK roots, CPython's float `repr`, PyYAML),
+//!   called from the concept modules through a function or two.
+//!
+//! Modules do not import each other in cycles (checked by the workspace's
+//! `tests/layering.rs`). The pattern comparator is the separate `garmentcode-compare`
+//! crate.
 
 #![warn(missing_docs)]
 

@@ -5,7 +5,7 @@ use crate::bands::StraightBandPanel;
 use crate::bodice::{CollarParams, Resolved};
 use crate::circle_skirt::CircleArcPanel;
 use crate::common::{register, v2, v3};
-use crate::design::{CollarStyle, NeckShape};
+use crate::design::CollarStyle;
 use crate::shapes::{self, NeckArgs};
 use garmentcode::Bezier;
 use garmentcode::curves::match_tangents;
@@ -348,9 +348,4 @@ impl Component for NoPanels {
     fn length(&self, _a: &Arena) -> f64 {
         0.0
     }
-}
-
-#[allow(dead_code)]
-fn _neck_shape_used(n: NeckShape) -> NeckShape {
-    n
 }

@@ -154,7 +154,7 @@ impl PanelSpec {
         Vec2::from(self.vertices[i])
     }
 
-    /// Geometry of edge `i` (indices must be valid: see [`validate`]).
+    /// Geometry of edge `i` (indices must be valid: see [`validate`](crate::validate)).
     pub fn edge_geom(&self, i: usize) -> Edge {
         let e = &self.edges[i];
         let (s, t) = (self.vertex(e.endpoints[0]), self.vertex(e.endpoints[1]));

@@ -1,9 +1,9 @@
 //! Reference parity: the parts of svgpathtools 1.8.0 (MIT licence,
 //! <https://github.com/mathandy/svgpathtools>) that pygarment calls, ported so that
 //! results agree bit for bit: segment intersections (with numpy's `roots`, a port of
-//! LAPACK's eigenvalue routines, and CPython's `set` iteration order) in [`segment`],
+//! LAPACK's eigenvalue routines, and CPython's `set` iteration order),
 //! and outlines (`Path`) with their crossings, crops and pygarment's split of SVG
-//! outlines into halves in [`path`].
+//! outlines into halves.
 //!
 //! Why hand-written: panel self-intersection verdicts near tangencies and shared
 //! vertices, and the shape of decorative cuts drawn from an SVG picture, depend on

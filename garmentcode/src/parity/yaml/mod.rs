@@ -1,5 +1,8 @@
-//! A small, fast, dependency-free reader and writer for the YAML subset used by
-//! GarmentCode's design-parameter and body-measurement files.
+//! Reference parity: a small, fast, dependency-free reader and writer for the YAML
+//! subset used by GarmentCode's design-parameter and body-measurement files,
+//! hand-written because the files must read and write exactly as PyYAML (the
+//! reference's library) reads and writes them, which general YAML crates do not do
+//! (YAML 1.1 resolution, PyYAML's errors, its emitter's quoting and folding).
 //!
 //! Reading follows PyYAML `safe_load` (a YAML 1.1 resolver) exactly for every
 //! input it accepts: the scanner is a port of PyYAML's scanner (same tokens, same

@@ -134,7 +134,7 @@ impl From<Value> for Node {
     }
 }
 
-/// Anything [`to_string`] can write: a [`Value`] or a [`Node`].
+/// Anything [`to_string`](super::to_string) can write: a [`Value`] or a [`Node`].
 pub trait AsValue {
     /// The value to write.
     fn as_value(&self) -> &Value;

@@ -3,8 +3,8 @@
 //! values, single-pair mappings inside flow sequences) and `composer.py`
 //! (exactly one document), with YAML 1.1 resolution of plain scalars.
 //!
-//! Also turns PyYAML's terse parser errors ("expected <block end>, but found
-//! '<block mapping start>'") into messages about what is wrong in the file.
+//! Also turns PyYAML's terse parser errors (`expected <block end>, but found
+//! '<block mapping start>'`) into messages about what is wrong in the file.
 
 use crate::parity::yaml::node::{Node, Value, YamlError, keys_equal};
 use crate::parity::yaml::resolve::{Resolved, resolve_plain};
