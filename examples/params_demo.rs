@@ -3,10 +3,8 @@
 //!
 //! `cargo run --example params_demo`
 
-use garmentcode::{Sampler, sample_rng};
-
 use garmentcode::io::{read_design, write_design};
-use garmentcode::{Choice, Params};
+use garmentcode::{Choice, Params, Sampler, sample_rng};
 
 /// How the hem is finished.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Choice)]

@@ -10,8 +10,7 @@ mod skirt_runtime;
 #[path = "../examples/paper_skirt.rs"]
 mod paper_skirt;
 
-use garmentcode::{Arena, PartExt};
-use garmentcode::{Severity, validate};
+use garmentcode::{Arena, PartExt, Severity, validate};
 
 #[test]
 fn runtime_skirt_builds_and_fits() {

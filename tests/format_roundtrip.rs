@@ -2,8 +2,7 @@
 //! validation without errors, and re-emits to a file that reads back to the same
 //! pattern (bit-exact numbers).
 
-use garmentcode::Pattern;
-use garmentcode::{Severity, validate};
+use garmentcode::{Pattern, Severity, validate};
 use std::path::PathBuf;
 
 fn cases() -> Vec<PathBuf> {

@@ -1,9 +1,8 @@
 //! The parameter derives: schema, defaults, typed access, design files and sampling.
 
-use garmentcode::{Kind, Range, Sampler, Value, sample_rng};
+use garmentcode::{Choice, Kind, Params, Range, Sampler, Value, sample_rng};
 
 use garmentcode::io::{read_design, write_design};
-use garmentcode::{Choice, Params};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Choice)]
 enum Style {

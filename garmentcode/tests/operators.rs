@@ -6,8 +6,9 @@ use garmentcode::curves::{match_tangents, quadratic_with_extremum};
 use garmentcode::ops::{
     DartSize, cut_corner, cut_into_edge, cut_many_into_edge, dart_shape, distribute_horizontally, distribute_y, side_with_cut,
 };
-use garmentcode::{Align, Arena, Curve, EdgeSeq, Gather, InterfaceId, PanelId, PartExt, Pattern, Rotation, StitchRule, Vec2, Vec3};
-use garmentcode::{Severity, validate};
+use garmentcode::{
+    Align, Arena, Curve, EdgeSeq, Gather, InterfaceId, PanelId, PartExt, Pattern, Rotation, Severity, StitchRule, Vec2, Vec3, validate,
+};
 
 fn v2(x: f64, y: f64) -> Vec2 {
     Vec2::new(x, y)

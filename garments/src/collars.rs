@@ -7,9 +7,8 @@ use crate::circle_skirt::CircleArcPanel;
 use crate::common::{register, v2, v3};
 use crate::design::CollarStyle;
 use crate::shapes::{self, NeckArgs};
-use garmentcode::Bezier;
 use garmentcode::curves::match_tangents;
-use garmentcode::{Arena, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, Node, PanelId, Part, Result, Rotation, StitchRule};
+use garmentcode::{Arena, Bezier, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, Node, PanelId, Part, Result, Rotation, StitchRule};
 
 /// The lapel's front piece.
 #[derive(Clone, Debug, Component)]

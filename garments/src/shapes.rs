@@ -7,8 +7,7 @@ use crate::design::NeckShape;
 use garmentcode::curves::{self, match_tangents};
 use garmentcode::math::{close_enough, norm};
 use garmentcode::parity::svgpath::{SvgPath, halves_from_outlines};
-use garmentcode::{Arena, Curve, Edge, EdgeSeq, Result};
-use garmentcode::{Bezier, SvgArc, Vec2};
+use garmentcode::{Arena, Bezier, Curve, Edge, EdgeSeq, Result, SvgArc, Vec2};
 
 /// Parameters of a half neckline shape.
 #[derive(Clone, Copy, Debug)]

@@ -2,8 +2,7 @@
 //! path, type, range or options, default and probability (figures from the
 //! reference's `default.yaml`, 122 parameters, in document order).
 
-use garmentcode::Params;
-use garmentcode::{Kind, Range, Value};
+use garmentcode::{Kind, Params, Range, Value};
 use garments::Design;
 
 #[derive(Debug)]

@@ -1,8 +1,7 @@
 //! `DesignWriter` writes the same design files as `write_design`, byte for byte.
 
-use garmentcode::Params;
 use garmentcode::io::{DesignWriter, write_design};
-use garmentcode::{Sampler, Value, sample_rng};
+use garmentcode::{Params, Sampler, Value, sample_rng};
 use garments::Design;
 
 #[test]

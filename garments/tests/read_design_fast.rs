@@ -2,10 +2,9 @@
 //! project's design files and freshly written ones, and on mutated files they
 //! either defer (`None`) or return exactly the full reader's design.
 
-use garmentcode::Params;
 use garmentcode::io::testing::{read_design_fast, read_design_full, read_design_lines, read_design_skeleton};
 use garmentcode::io::write_design;
-use garmentcode::{DesignSpace, Sampler, sample_rng};
+use garmentcode::{DesignSpace, Params, Sampler, sample_rng};
 use garments::Design;
 use std::path::Path;
 use std::sync::OnceLock;

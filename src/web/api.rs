@@ -20,9 +20,7 @@ use std::cell::RefCell;
 use std::sync::OnceLock;
 
 use garmentcode::io::{DesignError, from_values, read_design_values, write_design};
-
-use garmentcode::{Arena, Body, DesignSpace, Params};
-use garmentcode::{Kind, ParamSpec, Range, Value as PValue};
+use garmentcode::{Arena, Body, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue};
 use garments::Design;
 use garments::sample::{DatasetSampler, NamedBody, Outcome};
 use serde_json::{Map, Value as Json, json};
