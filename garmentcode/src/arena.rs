@@ -120,9 +120,10 @@ pub(crate) struct PanelData {
     pub translation: Vec3,
     pub rotation: Rotation,
     pub edges: EdgeSeq,
-    /// Named interfaces registered with the panel, in insertion order (corner cuts
-    /// update all of them and add new ones named `int_<n>`).
-    pub interfaces: Vec<(String, InterfaceId)>,
+    /// The interfaces made over this panel's edges, in creation order (every
+    /// [`Arena::interface`] over the panel adds one; a corner cut updates all of
+    /// them and adds the one over the inserted shape).
+    pub interfaces: Vec<InterfaceId>,
     /// Stitches inside the panel (darts).
     pub stitches: Vec<StitchRule>,
     /// When set, the panel's "length" is this interface's length instead of its

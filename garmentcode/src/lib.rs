@@ -49,6 +49,7 @@ mod memo;
 mod panel;
 mod params;
 mod pattern;
+mod remap;
 mod rotation;
 mod seq;
 mod stitch;
@@ -71,7 +72,7 @@ pub use arc::SvgArc;
 pub use arena::{Arena, EdgeId, EdgeSeq, InterfaceId, PanelId, Ruffle, StitchRule, VertexId};
 pub use bezier::Bezier;
 pub use body::{Body, BodyError, Derived};
-pub use component::{Align, Component, Interfaces, Node, Part, PartExt, Parts, Slot, SlotExt, assemble};
+pub use component::{Align, Component, Interfaces, Node, PanelPart, Part, PartExt, Parts, Slot, SlotExt, assemble};
 pub use edge::{Curve, Edge, Segment};
 pub use error::{Error, Result};
 pub use interface::Gather;
@@ -82,6 +83,7 @@ pub use params::{Choice, ParamValue, Params, join_path};
 pub use pattern::order::panel_order;
 pub use pattern::validate::{Problem, ProblemKind, Severity, validate};
 pub use pattern::{Curvature, EdgeSpec, PanelSpec, Pattern, Properties, StitchSide, StitchSpec};
+pub use remap::{IdMap, Remap};
 pub use rotation::Rotation;
 pub use stitch::StitchRecord;
 
@@ -99,7 +101,8 @@ pub use garmentcode_derive::{Choice, Component, Params, component};
 #[doc(hidden)]
 pub mod __private {
     pub use crate::arena::{Arena, InterfaceId, PanelId, StitchRule};
-    pub use crate::component::{Component, Interfaces, Node, Part, Parts, Slot};
+    pub use crate::component::{Component, Interfaces, Node, PanelPart, Part, Parts, Slot};
     pub use crate::params::spec::{Kind, ParamSpec, Range, Value};
     pub use crate::params::{Choice, ParamValue, Params, join_path};
+    pub use crate::remap::{IdMap, Remap};
 }
