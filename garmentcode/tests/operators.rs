@@ -7,8 +7,8 @@ use garmentcode::ops::{
     CornerCut, DartSize, cut_corner, cut_into_edge, cut_many_into_edge, dart_shape, distribute_horizontally, distribute_y, side_with_cut,
 };
 use garmentcode::{
-    Align, Arena, Component, Curve, EdgeSeq, Gather, InterfaceId, Interfaces, PanelId, PartExt, Pattern, Rotation, Severity, StitchRule,
-    Vec2, Vec3, validate,
+    Align, Arena, Component, Curve, Edge, EdgeSeq, Gather, InterfaceId, Interfaces, PanelId, PartExt, Pattern, Rotation, Severity,
+    StitchRule, Vec2, Vec3, validate,
 };
 
 fn v2(x: f64, y: f64) -> Vec2 {
@@ -126,9 +126,9 @@ fn bodice_block_corner_and_edge_projection() {
     // Neckline: a quadratic 9 cm wide whose extremum lies 9 cm below its chord, cut
     // into the top edge 4 cm from its end (the top edge runs right to left).
     let top = front_rect.top.edges(a)[0];
-    let control = quadratic_with_extremum(v2(0.5, -1.0)).unwrap();
+    let curve = quadratic_with_extremum(v2(0.5, -1.0)).unwrap();
     let neck = EdgeSeq::from_points(a, &[v2(0.0, 0.0), v2(9.0, 0.0)], false).unwrap();
-    a.set_curve(neck[0], Curve::Quadratic(control));
+    a.set_curve(neck[0], curve);
     let top_len = a.edge_length(top);
     let cut = cut_into_edge(a, &neck, top, top_len - 4.5 - 4.0, false).unwrap();
     let mut outline = front.edges(a).clone();
@@ -287,14 +287,13 @@ fn tiers_rows_and_tangent_matching() {
     // The hem becomes a cubic fitted to given end tangents at the hem's length.
     let hem = lower.bottom.edges(a)[0];
     let g = a.geom(hem);
-    let cps = [g.start, g.start + v2(20.0, -4.0), g.end + v2(-20.0, -4.0), g.end];
-    let fitted = match_tangents(cps, v2(1.0, -0.3).normalize(), v2(1.0, 0.3).normalize(), 64.0);
-    let b = garmentcode::Bezier::Cubic(fitted);
-    assert!(close(b.length(), 64.0, 0.01), "fitted length {}", b.length());
-    assert!(close(fitted[0].distance(g.start), 0.0, 1e-9), "the start stays put");
-    a.set_pos(a.end(hem), fitted[3]);
-    let rel = |p: Vec2| garmentcode::math::abs_to_rel(fitted[0], fitted[3], p);
-    a.set_curve(hem, Curve::Cubic(rel(fitted[1]), rel(fitted[2])));
+    let rel = |p: Vec2| garmentcode::math::abs_to_rel(g.start, g.end, p);
+    let initial = Edge { curve: Curve::Cubic(rel(g.start + v2(20.0, -4.0)), rel(g.end + v2(-20.0, -4.0))), ..g };
+    let fitted = match_tangents(&initial, v2(1.0, -0.3).normalize(), v2(1.0, 0.3).normalize(), 64.0);
+    assert!(close(fitted.length(), 64.0, 0.01), "fitted length {}", fitted.length());
+    assert!(close(fitted.start.distance(g.start), 0.0, 1e-9), "the start stays put");
+    a.set_pos(a.end(hem), fitted.end);
+    a.set_curve(hem, fitted.curve);
 
     let mut panels = vec![upper.panel, lower.panel];
     panels.extend(pockets.iter().map(|p| p.panel));

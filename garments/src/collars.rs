@@ -8,7 +8,7 @@ use crate::common::{v2, v3};
 use crate::design::CollarStyle;
 use crate::shapes::{self, NeckArgs};
 use garmentcode::curves::match_tangents;
-use garmentcode::{Arena, Bezier, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, PanelId, Result, Rotation, StitchRule};
+use garmentcode::{Arena, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, PanelId, Result, Rotation, StitchRule};
 
 /// The lapel's front piece.
 #[derive(Clone, Debug, Component)]
@@ -68,9 +68,7 @@ impl HoodPanel {
         let length = in_length + width / 2.0;
         let fit = |start, end, c1, c2, target: f64| {
             let e = Edge { start, end, curve: Curve::Cubic(c1, c2) };
-            let abs = e.abs_controls();
-            let fitted = match_tangents([e.start, abs[0], abs[1], e.end], v2(1.0, 0.0), v2(1.0, 0.0), target);
-            Edge::from_bezier(&Bezier::Cubic(fitted))
+            match_tangents(&e, v2(1.0, 0.0), v2(1.0, 0.0), target)
         };
         let back_curve = fit(v2(-width, -b_depth), v2(0.0, 0.0), v2(0.3, -0.2), v2(0.6, 0.2), b_length);
         let bottom_back = a.add_edge(back_curve)?;

@@ -7,7 +7,7 @@ use crate::design::NeckShape;
 use garmentcode::curves::{self, match_tangents};
 use garmentcode::math::{close_enough, norm};
 use garmentcode::parity::svgpath::{SvgPath, halves_from_outlines};
-use garmentcode::{Arena, Bezier, Curve, Edge, EdgeSeq, Result, SvgArc, Vec2};
+use garmentcode::{Arena, Curve, Edge, EdgeSeq, Result, SvgArc, Vec2};
 
 /// Parameters of a half neckline shape.
 #[derive(Clone, Copy, Debug)]
@@ -111,9 +111,7 @@ pub fn sleeve_opening(a: &mut Arena, incl: f64, width: f64, angle: f64, bottom_a
     let left = v2(-1.0, 0.0);
     let mix = bottom_angle_mix;
     let dir = (1.0 - mix) * rotated_dir + if mix > 0.0 { mix * down } else { -mix * left };
-    let abs = inv.abs_controls();
-    let fitted = match_tangents([inv.start, abs[0], abs[1], inv.end], down, dir, cut.length());
-    let opening = Edge::from_bezier(&Bezier::Cubic(fitted)).reversed();
+    let opening = match_tangents(&inv, down, dir, cut.length()).reversed();
     Ok(EdgeSeq(vec![a.add_edge(opening)?]))
 }
 

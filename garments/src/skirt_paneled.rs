@@ -15,8 +15,8 @@ use std::f64::consts::PI;
 /// A quadratic edge between two vertices with end tangents fitted as the reference's
 /// `curve_from_tangents` does.
 pub(crate) fn tangent_curve(a: &mut Arena, s: VertexId, e: VertexId, t0: Option<Vec2>, t1: Option<Vec2>, guess: Vec2) -> Result<EdgeId> {
-    let cp = quadratic_from_tangents(a.pos(s), a.pos(e), t0, t1, guess);
-    a.edge(s, e, Curve::Quadratic(cp))
+    let curve = quadratic_from_tangents(a.pos(s), a.pos(e), t0, t1, guess);
+    a.edge(s, e, curve)
 }
 
 /// One panel of a two-panel skirt: a trapezoid with an optionally gathered waist and
