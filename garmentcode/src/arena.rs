@@ -11,9 +11,9 @@
 
 use crate::edge::{Curve, Edge};
 use crate::error::{Error, Result};
-use crate::interface::InterfaceData;
-use crate::math::{Vec2, close_enough};
-use crate::panel::PanelData;
+use crate::math::{Vec2, Vec3, close_enough};
+use crate::rotation::Rotation;
+use std::ops::{Deref, DerefMut};
 
 /// Identity of a vertex.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -80,6 +80,133 @@ pub(crate) struct EdgeData {
     pub label: u32,
     /// Index of the edge in its panel's written loop, set on assembly.
     pub geometric_id: u32,
+}
+
+/// An ordered list of edges.
+///
+/// ```
+/// use garmentcode::{Arena, EdgeSeq, Vec2};
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 10.0), Vec2::new(20.0, 10.0), Vec2::new(20.0, 0.0)];
+/// let outline = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// assert!(outline.is_loop(&a));
+/// assert_eq!((outline.len(), outline.length(&a)), (4, 60.0));
+/// // A slice is a new list over the same edges; `copy` copies the geometry.
+/// let top = outline.slice(1, 2);
+/// let moved = top.copy(&mut a);
+/// moved.translate_by(&mut a, Vec2::new(0.0, 5.0));
+/// assert_eq!(top.shortcut(&a), (Vec2::new(0.0, 10.0), Vec2::new(20.0, 10.0)));
+/// assert_eq!(moved.shortcut(&a), (Vec2::new(0.0, 15.0), Vec2::new(20.0, 15.0)));
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct EdgeSeq(pub Vec<EdgeId>);
+
+impl Deref for EdgeSeq {
+    type Target = Vec<EdgeId>;
+    fn deref(&self) -> &Vec<EdgeId> {
+        &self.0
+    }
+}
+
+impl DerefMut for EdgeSeq {
+    fn deref_mut(&mut self) -> &mut Vec<EdgeId> {
+        &mut self.0
+    }
+}
+
+impl From<Vec<EdgeId>> for EdgeSeq {
+    fn from(v: Vec<EdgeId>) -> Self {
+        EdgeSeq(v)
+    }
+}
+
+impl From<EdgeId> for EdgeSeq {
+    fn from(e: EdgeId) -> Self {
+        EdgeSeq(vec![e])
+    }
+}
+
+impl<'a> IntoIterator for &'a EdgeSeq {
+    type Item = &'a EdgeId;
+    type IntoIter = std::slice::Iter<'a, EdgeId>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.0.iter()
+    }
+}
+
+/// A stitch between two interfaces, matched edge for edge.
+///
+/// Making the rule splits edges so that both sides have matching edges:
+///
+/// ```
+/// use garmentcode::{Arena, EdgeSeq, StitchRule, Vec2};
+///
+/// let mut a = Arena::new();
+/// let square = |a: &mut Arena, name: &str| -> garmentcode::Result<_> {
+///     let corners = [Vec2::ZERO, Vec2::new(0.0, 20.0), Vec2::new(20.0, 20.0), Vec2::new(20.0, 0.0)];
+///     let edges = EdgeSeq::from_points(a, &corners, true)?;
+///     Ok((a.panel_with_edges(name, edges.clone()), edges))
+/// };
+/// let (front, f) = square(&mut a, "front")?;
+/// let (back, b) = square(&mut a, "back")?;
+/// let one_edge = a.interface(front, f[0]);
+/// let two_edges = a.interface(back, b.slice(0, 2));
+/// let rule = StitchRule::new(&mut a, one_edge, two_edges)?;
+/// assert!(rule.is_matching(&a));
+/// assert_eq!((one_edge.len(&a), two_edges.len(&a)), (2, 2));
+/// assert_eq!(front.edges(&a).len(), 5);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StitchRule {
+    /// First side.
+    pub a: InterfaceId,
+    /// Second side.
+    pub b: InterfaceId,
+}
+
+/// A run of consecutive interface edges `[start, end)` gathered by `coeff`: the
+/// fabric of these edges is `coeff` times longer than the seam it is sewn to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ruffle {
+    /// Gather factor (1 = flat).
+    pub coeff: f64,
+    /// First edge of the section.
+    pub start: usize,
+    /// One past the last edge of the section.
+    pub end: usize,
+}
+
+/// Stored interface.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct InterfaceData {
+    pub edges: EdgeSeq,
+    pub panels: Vec<PanelId>,
+    pub right_wrong: Vec<bool>,
+    /// "Treat this edge as reversed" flags used by stitch matching.
+    pub flipping: Vec<bool>,
+    pub ruffle: Vec<Ruffle>,
+}
+
+/// Stored panel.
+#[derive(Clone, Debug)]
+pub(crate) struct PanelData {
+    pub name: String,
+    pub label: String,
+    pub translation: Vec3,
+    pub rotation: Rotation,
+    pub edges: EdgeSeq,
+    /// The interfaces made over this panel's edges, in creation order (every
+    /// [`Arena::interface`] over the panel adds one; a corner cut updates all of
+    /// them and adds the one over the inserted shape).
+    pub interfaces: Vec<InterfaceId>,
+    /// Stitches inside the panel (darts).
+    pub stitches: Vec<StitchRule>,
+    /// When set, the panel's "length" is this interface's length instead of its
+    /// bounding-box height.
+    pub length_interface: Option<InterfaceId>,
 }
 
 /// Storage of one garment's geometry.

@@ -5,7 +5,7 @@
 //! measurements are checked on load: every one must be present and finite, lengths
 //! positive, angles non-negative.
 
-use crate::yaml::{self, Node, Value as Y};
+use crate::parity::yaml::{self, Node, Value as Y};
 use std::fmt;
 
 /// The measurements of one body, in centimetres and degrees.

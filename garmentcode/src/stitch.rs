@@ -6,40 +6,9 @@
 //! the same number of edges with the same fractions. Matching happens immediately,
 //! so the order in which a program creates stitches shapes the geometry.
 
-use crate::arena::{Arena, InterfaceId};
+use crate::arena::{Arena, InterfaceId, StitchRule};
 use crate::error::{Error, Result};
 use crate::math::close_enough;
-
-/// A stitch between two interfaces, matched edge for edge.
-///
-/// Making the rule splits edges so that both sides have matching edges:
-///
-/// ```
-/// use garmentcode::{Arena, EdgeSeq, StitchRule, Vec2};
-///
-/// let mut a = Arena::new();
-/// let square = |a: &mut Arena, name: &str| -> garmentcode::Result<_> {
-///     let corners = [Vec2::ZERO, Vec2::new(0.0, 20.0), Vec2::new(20.0, 20.0), Vec2::new(20.0, 0.0)];
-///     let edges = EdgeSeq::from_points(a, &corners, true)?;
-///     Ok((a.panel_with_edges(name, edges.clone()), edges))
-/// };
-/// let (front, f) = square(&mut a, "front")?;
-/// let (back, b) = square(&mut a, "back")?;
-/// let one_edge = a.interface(front, f[0]);
-/// let two_edges = a.interface(back, b.slice(0, 2));
-/// let rule = StitchRule::new(&mut a, one_edge, two_edges)?;
-/// assert!(rule.is_matching(&a));
-/// assert_eq!((one_edge.len(&a), two_edges.len(&a)), (2, 2));
-/// assert_eq!(front.edges(&a).len(), 5);
-/// # Ok::<(), garmentcode::Error>(())
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct StitchRule {
-    /// First side.
-    pub a: InterfaceId,
-    /// Second side.
-    pub b: InterfaceId,
-}
 
 /// One written stitch: panel name and edge index on each side.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]

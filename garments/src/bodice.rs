@@ -7,7 +7,7 @@ use crate::design::{ArmholeShape, CollarStyle, CuffKind, Design, NeckShape};
 use crate::sleeves::Sleeve;
 use garmentcode::math::lerp;
 use garmentcode::ops::{Cut, DartSize, EdgeSide, cut_corner, dart_shape};
-use garmentcode::{Align, Arena, Body, Component, EdgeSeq, Gather, InterfaceId, PanelId, PartExt, Result, StitchRule, Vec2};
+use garmentcode::{Align, Arena, Body, Component, EdgeSeq, InterfaceId, PanelId, PartExt, Result, StitchRule, Vec2};
 
 /// How a torso panel reports its width at a level below the shoulder.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -719,9 +719,4 @@ impl Shirt {
     fn shirt_length(&self, a: &Arena) -> f64 {
         self.right.part_length(a)
     }
-}
-
-#[allow(dead_code)]
-fn _gather_used(g: Gather) -> Gather {
-    g
 }

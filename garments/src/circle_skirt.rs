@@ -3,7 +3,7 @@
 
 use crate::common::{eval_rise, v2, v3};
 use crate::design::Design;
-use garmentcode::arc;
+use garmentcode::curves;
 use garmentcode::ops::{DartSize, EdgeSide, cut_into_edge, dart_shape};
 use garmentcode::{Arena, Body, Component, Curve, EdgeSeq, InterfaceId, PanelId, Result, StitchRule};
 use std::f64::consts::PI;
@@ -46,12 +46,12 @@ impl CircleArcPanel {
         let large = half > PI / 2.0;
         let p0 = a.vertex(v2(-dist_w / 2.0, 0.0));
         let p1 = a.vertex(v2(dist_w / 2.0, 0.0));
-        let cy = arc::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, large, true);
+        let cy = curves::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, large, true);
         let top = a.edge(p0, p1, Curve::Arc { cy })?;
         let p2 = a.vertex(v2(dist_out / 2.0, -vert_len));
         let side = a.edge(p1, p2, Curve::Line)?;
         let p3 = a.vertex(v2(-dist_out / 2.0, -vert_len));
-        let cy = arc::cy_from_radius(a.pos(p2), a.pos(p3), top_rad + length, large, false);
+        let cy = curves::cy_from_radius(a.pos(p2), a.pos(p3), top_rad + length, large, false);
         let bottom = a.edge(p2, p3, Curve::Arc { cy })?;
         let mut edges = EdgeSeq(vec![top, side, bottom]);
         edges.close_loop(a)?;
@@ -142,12 +142,12 @@ impl AsymHalfCirclePanel {
         let dist_out = 2.0 * (top_rad + length_s);
         let p0 = a.vertex(v2(-dist_w / 2.0, 0.0));
         let p1 = a.vertex(v2(dist_w / 2.0, 0.0));
-        let cy = arc::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, false, true);
+        let cy = curves::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, false, true);
         let top = a.edge(p0, p1, Curve::Arc { cy })?;
         let p2 = a.vertex(v2(dist_out / 2.0, 0.0));
         let side = a.edge(p1, p2, Curve::Line)?;
         let p3 = a.vertex(v2(-dist_out / 2.0, 0.0));
-        let cy = arc::cy_from_three_points(a.pos(p2), a.pos(p3), v2(0.0, -(top_rad + length_f)));
+        let cy = curves::cy_from_three_points(a.pos(p2), a.pos(p3), v2(0.0, -(top_rad + length_f)));
         let bottom = a.edge(p2, p3, Curve::Arc { cy })?;
         let mut edges = EdgeSeq(vec![top, side, bottom]);
         edges.close_loop(a)?;

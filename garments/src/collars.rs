@@ -5,7 +5,7 @@ use crate::bands::StraightBandPanel;
 use crate::bodice::{CollarParams, Resolved};
 use crate::circle_skirt::CircleArcPanel;
 use crate::common::{v2, v3};
-use crate::design::{CollarStyle, NeckShape};
+use crate::design::CollarStyle;
 use crate::shapes::{self, NeckArgs};
 use garmentcode::curves::match_tangents;
 use garmentcode::{Arena, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, PanelId, Result, Rotation, StitchRule};
@@ -307,9 +307,4 @@ impl Collar {
             Collar::NoPanels(_) => None,
         }
     }
-}
-
-#[allow(dead_code)]
-fn _neck_shape_used(n: NeckShape) -> NeckShape {
-    n
 }

@@ -124,7 +124,7 @@ impl ThinSkirtPanel {
         } else {
             let (s, e) = (a.end(edges.last_edge()), a.start(edges[0]));
             let through = garmentcode::math::rel_to_abs(a.pos(s), a.pos(e), v2(0.5, b_curvature));
-            let cy = garmentcode::arc::cy_from_three_points(a.pos(s), a.pos(e), through);
+            let cy = garmentcode::curves::cy_from_three_points(a.pos(s), a.pos(e), through);
             edges.push(a.edge(s, e, Curve::Arc { cy })?);
         }
         let panel = a.panel_with_edges(name, edges.clone());

@@ -2,7 +2,7 @@
 
 use crate::args::{Args, UsageError};
 use crate::commands::{CliError, read_pattern};
-use garmentcode::pattern::{Problem, Severity, validate};
+use garmentcode::{Problem, Severity, validate};
 use serde_json::json;
 
 pub fn run(mut args: Args) -> Result<i32, CliError> {

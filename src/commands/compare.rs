@@ -3,7 +3,7 @@
 
 use crate::args::{Args, UsageError};
 use crate::commands::CliError;
-use garmentcode::compare::{self, CompareOptions};
+use garmentcode_compare::{self as compare, CompareOptions};
 use std::path::Path;
 
 pub fn run(mut args: Args) -> Result<i32, CliError> {

@@ -60,7 +60,7 @@ pub fn load_design(arg: Option<&str>) -> Result<(garments::Design, String), CliE
         return Err(CliError::Input(format!("{name}: no such design file, and not a built-in design (built-in: {})", known.join(", "))));
     }
     let text = std::fs::read_to_string(name).map_err(|e| CliError::Input(format!("{name}: cannot read: {e}")))?;
-    let d = garmentcode::params::read_design(&text, name, &garments::Design::design_space()).map_err(|e| CliError::Input(e.to_string()))?;
+    let d = garmentcode::io::read_design(&text, name, &garments::Design::design_space()).map_err(|e| CliError::Input(e.to_string()))?;
     let stem = std::path::Path::new(name).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "design".into());
     Ok((d, stem))
 }

@@ -19,8 +19,8 @@
 use std::cell::RefCell;
 use std::sync::OnceLock;
 
-use garmentcode::params::{DesignError, Kind, ParamSpec, Range, Value as PValue, from_values, read_design_values, write_design};
-use garmentcode::{Arena, Body, DesignSpace, Params};
+use garmentcode::io::{DesignError, from_values, read_design_values, write_design};
+use garmentcode::{Arena, Body, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue};
 use garments::Design;
 use garments::sample::{DatasetSampler, NamedBody, Outcome};
 use serde_json::{Map, Value as Json, json};

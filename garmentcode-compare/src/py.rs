@@ -351,7 +351,7 @@ pub fn float_repr(x: f64) -> String {
     if x == 0.0 && x.is_sign_negative() {
         return "-0.0".into();
     }
-    crate::pattern::python_float_repr(x)
+    garmentcode::parity::float_repr::python_float_repr(x)
 }
 
 /// `f'{x:.Nf}'`. Rust's fixed formatting rounds the exact binary value half-to-even like

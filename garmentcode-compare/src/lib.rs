@@ -1,4 +1,5 @@
-//! Geometric comparison of two sewing patterns, with the judgement the project's
+//! The pattern comparator, a tool apart from the runtime (`garmentcode`): geometric
+//! comparison of two sewing patterns, with the judgement the project's
 //! parity checks use (`compare_spec.py`, written for the reference cases): two
 //! patterns are the same garment when every outline and stitch matches to a
 //! tolerance (0.05 cm), whatever the vertex order or the JSON text.
@@ -9,12 +10,14 @@
 //! matter); perimeters are compared; stitches are an unordered set of unordered pairs of
 //! sides identified by panel name and edge geometry, plus their flags. Sleeve, sleeve-cuff
 //! and hood panels ("chaotic" panels, built in the reference from a numerically chaotic
-//! fit) and the stitches touching them are judged by the chaotic rule (see the `chaos` module).
+//! fit) and the stitches touching them are judged by the chaotic rule (see `chaos.rs`).
 //!
 //! The port follows the script statement by statement, including its early exits (which
 //! make reported deviations lower bounds), its iteration orders, and CPython's float
 //! arithmetic where it could change a verdict ([`py`]). Messages for malformed input are
 //! close to, but not always the same text as, Python's exception messages.
+
+#![warn(missing_docs)]
 
 mod chaos;
 mod dist;
@@ -463,8 +466,8 @@ pub fn compare_spec_files(expected: &Path, actual: &Path, opts: &CompareOptions)
 }
 
 /// Compare the runtime's patterns (serialised as the reference writes them).
-pub fn compare_runtime_patterns(expected: &crate::pattern::Pattern, actual: &crate::pattern::Pattern, opts: &CompareOptions) -> Verdict {
-    let text = |p: &crate::pattern::Pattern, which: &str| match p.to_json() {
+pub fn compare_runtime_patterns(expected: &garmentcode::Pattern, actual: &garmentcode::Pattern, opts: &CompareOptions) -> Verdict {
+    let text = |p: &garmentcode::Pattern, which: &str| match p.to_json() {
         Ok(t) => t,
         Err(e) => format!("{{\"unserialisable {which} pattern\": {}}}", serde_json::Value::String(e.to_string())),
     };

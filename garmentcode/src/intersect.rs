@@ -1,21 +1,18 @@
 //! Intersections of lines and Bézier curves, and the reference's self-intersection
 //! check of panel outlines.
 //!
-//! The routines in [`svg`] agree with the ones the reference calls (svgpathtools) bit
+//! The routines in [`parity::svgpath`](crate::parity::svgpath) agree with the ones the reference calls (svgpathtools) bit
 //! for bit, including the order of results and their tolerances, so verdicts near
 //! tangencies and shared vertices are the reference's. Arcs are replaced by 11
 //! straight pieces first, as the reference does.
 
-pub mod svg;
-
-pub use svg::{IntersectError, Num, Seg};
-
 use crate::arena::{Arena, PanelId};
 use crate::bezier::Bezier;
 use crate::edge::{Curve, Edge, Segment};
+use crate::parity::svgpath::{IntersectError, P, Seg, try_has_self_intersection, try_intersect};
 use crate::pattern::PanelSpec;
 
-fn p(v: crate::math::Vec2) -> svg::P {
+fn p(v: crate::math::Vec2) -> P {
     [v.x, v.y]
 }
 
@@ -32,14 +29,14 @@ pub fn to_seg(s: &Segment) -> Seg {
 
 /// Parameter pairs where two segments meet, as svgpathtools reports them.
 pub fn intersect(a: &Seg, b: &Seg) -> Result<Vec<(f64, f64)>, IntersectError> {
-    svg::try_intersect(a, b)
+    try_intersect(a, b)
 }
 
 /// The reference's panel check: any intersection of two outline segments other
 /// than at a shared end point. Inputs svgpathtools would raise on count as
 /// intersecting (a broken outline is not a good one).
 pub fn has_self_intersection(segs: &[Seg]) -> bool {
-    svg::try_has_self_intersection(segs).unwrap_or(true)
+    try_has_self_intersection(segs).unwrap_or(true)
 }
 
 fn edge_segments(e: &Edge, out: &mut Vec<Seg>) {

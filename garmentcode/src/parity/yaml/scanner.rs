@@ -10,7 +10,7 @@
 //! UTF-8 character. Positions are byte offsets; columns are counted in
 //! characters (as PyYAML does) only when a mark is taken.
 
-use crate::yaml::YamlError;
+use crate::parity::yaml::node::YamlError;
 use std::collections::VecDeque;
 
 /// Nesting deeper than this is refused (PyYAML itself fails with a

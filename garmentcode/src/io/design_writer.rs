@@ -5,8 +5,11 @@
 //! that cannot be made sure of (a value whose text could depend on where it
 //! stands), the writer falls back to `write_design`.
 
-use super::{DesignSpace, Params, Range, Value};
-use crate::yaml::{self, Node, Value as Y};
+use super::design::write_design;
+use crate::params::Params;
+use crate::params::space::DesignSpace;
+use crate::params::spec::{Range, Value};
+use crate::parity::yaml::{self, Node, Value as Y};
 use std::collections::HashMap;
 
 /// A design-file writer for one design space.
@@ -31,7 +34,7 @@ fn marker(i: usize) -> String {
 
 /// The text of `v` as the emitter writes it as a mapping value, if it is one line.
 fn value_text(v: &Value) -> Option<String> {
-    let doc = Node::new(Y::Map(vec![(Node::new(Y::Str("v".into())), super::space::to_node(v))]));
+    let doc = Node::new(Y::Map(vec![(Node::new(Y::Str("v".into())), super::design_space::to_node(v))]));
     let text = yaml::to_string(&doc);
     let inner = text.strip_prefix("v: ")?.strip_suffix('\n')?;
     (!inner.contains('\n')).then(|| inner.to_string())
@@ -92,7 +95,7 @@ impl DesignWriter {
     /// [`write_design`](super::write_design)`(design, space)`.
     pub fn write<D: Params>(&self, design: &D) -> String {
         if !self.templated() {
-            return super::write_design(design, &self.space);
+            return write_design(design, &self.space);
         }
         let mut out = String::with_capacity(self.after.len() + self.before.iter().map(|b| b.len() + 24).sum::<usize>());
         let mut path: Vec<&str> = Vec::new();
@@ -111,7 +114,7 @@ impl DesignWriter {
                 Value::Float(x) => yaml::push_float_repr(&mut out, *x),
                 Value::Str(s) => match self.options[i].get(s) {
                     Some(t) => out.push_str(t),
-                    None => return super::write_design(design, &self.space),
+                    None => return write_design(design, &self.space),
                 },
             }
         }

@@ -12,8 +12,8 @@
 //! which PyYAML reads identically. Only keys whose written form exceeds YAML's
 //! 1024-character simple-key limit still use `? key`.
 
-use crate::yaml::resolve::plain_is_str;
-use crate::yaml::{AsValue, Node, Value};
+use crate::parity::yaml::node::{AsValue, Node, Value};
+use crate::parity::yaml::resolve::plain_is_str;
 
 const BEST_INDENT: i64 = 2;
 const BEST_WIDTH: usize = 80;
@@ -561,7 +561,7 @@ pub(crate) fn push_float_repr(out: &mut String, f: f64) {
         return;
     }
     let start = out.len();
-    crate::pattern::write_python_float(out, f);
+    crate::parity::float_repr::write_python_float(out, f);
     if let Some(e) = out[start..].find('e')
         && !out[start..start + e].contains('.')
     {

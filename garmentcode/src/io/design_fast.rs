@@ -19,15 +19,17 @@
 //! decides an error; whenever it succeeds, the design equals the full reader's
 //! (checked by the tests on the project's design files and on mutated ones).
 
-use super::space::Entry;
-use super::{DesignSpace, Params, Value};
-use crate::yaml::{Resolved, resolve_plain, resolves_to_value};
+use crate::params::Params;
+use crate::params::space::{DesignSpace, Entry, Skeleton};
+use crate::params::spec::Value;
+use crate::parity::yaml::{Resolved, resolve_plain, resolves_to_value};
+use std::sync::atomic::Ordering;
 
 /// Deepest nesting accepted (design files are about six levels deep).
 const MAX_DEPTH: usize = 64;
 
 /// The design in `text`, or `None` when the full reader must decide.
-pub(super) fn read_design_fast<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
+pub(crate) fn read_design_fast<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
     let values = match space.skeleton() {
         Some(skeleton) => skeleton.read_values(text, space).or_else(|| read_values_lines(text, space))?,
         None => read_values_lines(text, space)?,
@@ -36,12 +38,12 @@ pub(super) fn read_design_fast<D: Params>(text: &str, space: &DesignSpace) -> Op
 }
 
 /// Only the line reader (for tests).
-pub(super) fn read_design_lines<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
+pub(crate) fn read_design_lines<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
     design_from_values(&read_values_lines(text, space)?, space)
 }
 
 /// Only the space's layout (for tests; built even on a first read).
-pub(super) fn read_design_skeleton<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
+pub(crate) fn read_design_skeleton<D: Params>(text: &str, space: &DesignSpace) -> Option<D> {
     design_from_values(&space.built_skeleton()?.read_values(text, space)?, space)
 }
 
@@ -86,20 +88,19 @@ fn read_values_lines(text: &str, space: &DesignSpace) -> Option<Vec<Option<Value
     Some(r.values)
 }
 
-/// A design space's own file layout (as [`DesignSpace::to_yaml_with`] writes it)
-/// with holes where the parameters' `v` values go.
-///
-/// Why: files written for a space (the dataset sampler's, the benchmark's) repeat
-/// its ranges, types and probabilities around the values, about nine lines out of
-/// ten. When a file is the layout with plain values in the holes, comparing the
-/// literal text and reading only the values gives what the line reader gives, in a
-/// fraction of the time; anything else goes to the line reader.
-#[derive(Debug)]
-pub(super) struct Skeleton {
-    /// Literal text before each value, and the index of the value's parameter.
-    parts: Vec<(String, usize)>,
-    /// Literal text after the last value.
-    tail: String,
+impl DesignSpace {
+    /// The space's file layout with holes for the values, from the second read on.
+    pub(crate) fn skeleton(&self) -> Option<&Skeleton> {
+        if self.skeleton.reads.fetch_add(1, Ordering::Relaxed) == 0 {
+            return None;
+        }
+        self.built_skeleton()
+    }
+
+    /// The space's file layout with holes for the values, built now if not yet.
+    pub(crate) fn built_skeleton(&self) -> Option<&Skeleton> {
+        self.skeleton.cell.get_or_init(|| Skeleton::new(self)).as_ref()
+    }
 }
 
 impl Skeleton {
@@ -110,7 +111,7 @@ impl Skeleton {
     /// The lines around the holes are then lines the line reader accepts, and a
     /// file that differs only by other plain scalars in the holes takes the same
     /// path through it.
-    pub(super) fn new(space: &DesignSpace) -> Option<Skeleton> {
+    pub(crate) fn new(space: &DesignSpace) -> Option<Skeleton> {
         const MARK: &str = "zqvaluehole";
         let n = space.params().len();
         let holes = space.to_yaml_with(|p| Value::Str(format!("{MARK}{}{MARK}", space.index_of(&p.path).unwrap_or(usize::MAX))));

@@ -6,13 +6,13 @@
 //! Also turns PyYAML's terse parser errors (`expected <block end>, but found
 //! '<block mapping start>'`) into messages about what is wrong in the file.
 
-use crate::yaml::resolve::{Resolved, resolve_plain};
-use crate::yaml::scanner::{Kind, MAX_DEPTH, Mark, Scanner, Style, Text, Token, check_characters, short_quote};
-use crate::yaml::{Node, Value, YamlError};
+use crate::parity::yaml::node::{Node, Value, YamlError, keys_equal};
+use crate::parity::yaml::resolve::{Resolved, resolve_plain};
+use crate::parity::yaml::scanner::{Kind, MAX_DEPTH, Mark, Scanner, Style, Text, Token, check_characters, short_quote};
 
 pub(crate) fn parse(text: &str) -> Result<Node, YamlError> {
     let clean = check_characters(text)?;
-    if let Some(node) = crate::yaml::fast::parse_fast(text, clean) {
+    if let Some(node) = crate::parity::yaml::fast::parse_fast(text, clean) {
         return Ok(node);
     }
     parse_full(text)
@@ -520,38 +520,6 @@ impl<'a> Parser<'a> {
                 what
             ),
         )
-    }
-}
-
-/// Python dict key equality for scalars: numbers compare by value across
-/// bool/int/float, NaN keys are all the same object in PyYAML (so equal).
-pub(crate) fn keys_equal(a: &Value, b: &Value) -> bool {
-    fn num(v: &Value) -> Option<Num> {
-        match *v {
-            Value::Bool(b) => Some(Num::I(b as i64)),
-            Value::Int(i) => Some(Num::I(i)),
-            Value::Float(f) => Some(Num::F(f)),
-            _ => None,
-        }
-    }
-    enum Num {
-        I(i64),
-        F(f64),
-    }
-    match (a, b) {
-        (Value::Str(x), Value::Str(y)) => x == y,
-        (Value::Null, Value::Null) => true,
-        _ => match (num(a), num(b)) {
-            (Some(Num::I(x)), Some(Num::I(y))) => x == y,
-            (Some(Num::F(x)), Some(Num::F(y))) => x == y || (x.is_nan() && y.is_nan()),
-            (Some(Num::I(i)), Some(Num::F(f))) | (Some(Num::F(f)), Some(Num::I(i))) => {
-                // Exact comparison, as Python does (no rounding of large ints):
-                // only integral floats in i64's range [-2^63, 2^63) can be equal.
-                const TWO_63: f64 = 9_223_372_036_854_775_808.0;
-                f.fract() == 0.0 && (-TWO_63..TWO_63).contains(&f) && f as i64 == i
-            }
-            _ => false,
-        },
     }
 }
 

@@ -219,7 +219,7 @@ impl std::fmt::Display for IntersectError {
 
 impl std::error::Error for IntersectError {}
 
-/// Like [`intersect`](super::intersect) but returns the reference's exceptions as errors.
+/// Like [`intersect`](crate::intersect::intersect) but returns the reference's exceptions as errors.
 /// Points are taken to be `numpy.complex128`, as in pygarment's curves.
 pub fn try_intersect(a: &Seg, b: &Seg) -> Result<Vec<(f64, f64)>, IntersectError> {
     try_intersect_as(a, Num::Numpy, b, Num::Numpy)
@@ -263,7 +263,7 @@ fn intersect_into(a: &Seg, a_num: Num, b: &Seg, b_num: Num, out: &mut Vec<(f64, 
     }
 }
 
-/// [`has_self_intersection`](super::has_self_intersection) returning the reference's exceptions as errors.
+/// [`has_self_intersection`](crate::intersect::has_self_intersection) returning the reference's exceptions as errors.
 pub fn try_has_self_intersection(segs: &[Seg]) -> Result<bool, IntersectError> {
     // The control-point box reject that starts every `intersect` call, with each
     // segment's box computed once instead of once per pair (most pairs stop there).

@@ -1,8 +1,8 @@
 //! The runtime's own reading + writing of every reference spec
 //! must be judged equal to the file (exercises `compare_runtime_patterns`).
 
-use garmentcode::compare::{CompareOptions, compare_patterns, compare_runtime_patterns};
-use garmentcode::pattern::Pattern;
+use garmentcode::Pattern;
+use garmentcode_compare::{CompareOptions, compare_patterns, compare_runtime_patterns};
 
 #[test]
 fn runtime_round_trip_passes() {

@@ -1,47 +1,7 @@
-//! A small, fast, dependency-free reader and writer for the YAML subset used by
-//! GarmentCode's design-parameter and body-measurement files.
-//!
-//! Reading follows PyYAML `safe_load` (a YAML 1.1 resolver) exactly for every
-//! input it accepts: the scanner is a port of PyYAML's scanner (same tokens, same
-//! simple-key and indentation rules, same tab strictness), the parser follows
-//! PyYAML's parser states, and plain scalars are resolved with PyYAML's YAML 1.1
-//! regular expressions (`yes`/`on` are booleans, `1e3` is a string, `0777` is
-//! octal, `1:30` is 90 ...). Whatever PyYAML rejects is rejected too. A few
-//! features PyYAML does accept are deliberately unsupported and give a clear
-//! error instead: anchors/aliases, tags, directives, block scalars (`|`, `>`),
-//! explicit keys (`?`), multiple documents, timestamps, merge keys (`<<`),
-//! integers outside `i64`, and duplicate mapping keys (PyYAML silently keeps the
-//! last one; we name both lines).
-//!
-//! Typical files take a line-oriented fast path (`fast.rs`) that handles
-//! `key: value` / `- item` blocks, comments, single-line quoted scalars and
-//! `[a, b]` lists; anything else (and every error) goes through the full
-//! PyYAML port. Both paths are checked against each other by the fuzz tests.
-//!
-//! Writing ([`to_string`]) produces the same text as PyYAML
-//! `dump(data, default_flow_style=False, sort_keys=False)` (block style, 2-space
-//! indentation, sequences inside mappings not indented, quoting only where needed,
-//! lines folded at 80 columns, non-ASCII escaped), with full-precision floats.
-//!
-//! ```
-//! let doc = garmentcode::yaml::parse("design:\n  v: 1.\n  range: [0.5, 2]\n").unwrap();
-//! let v = doc.get("design").and_then(|d| d.get("v")).unwrap();
-//! assert_eq!(v.value, garmentcode::yaml::Value::Float(1.0));
-//! assert_eq!((v.line, v.col), (2, 6));
-//! assert_eq!(garmentcode::yaml::to_string(&doc), "design:\n  v: 1.0\n  range:\n  - 0.5\n  - 2\n");
-//! ```
-
-mod emitter;
-mod fast;
-mod parser;
-mod resolve;
-mod scanner;
+//! The YAML document tree ([`Node`], [`Value`]), parse errors, and Python's key
+//! equality for mapping keys.
 
 use std::fmt;
-
-pub(crate) use emitter::push_float_repr;
-pub use emitter::to_string;
-pub(crate) use resolve::{Resolved, resolve_plain, resolves_to_value};
 
 /// A YAML value as PyYAML `safe_load` would build it (restricted to the types
 /// the supported subset can produce).
@@ -174,7 +134,7 @@ impl From<Value> for Node {
     }
 }
 
-/// Anything [`to_string`] can write: a [`Value`] or a [`Node`].
+/// Anything [`to_string`](super::to_string) can write: a [`Value`] or a [`Node`].
 pub trait AsValue {
     /// The value to write.
     fn as_value(&self) -> &Value;
@@ -213,28 +173,34 @@ impl fmt::Display for YamlError {
 
 impl std::error::Error for YamlError {}
 
-/// Parses one YAML document (as PyYAML `safe_load` would) into a [`Node`] tree.
-///
-/// An empty document (only comments, blank lines or `---`) gives a `Null` node.
-/// Errors name the line and column of the problem; unsupported YAML features
-/// are reported as such rather than misread.
-pub fn parse(text: &str) -> Result<Node, YamlError> {
-    parser::parse(text)
-}
-
-/// Testing aids; not part of the stable API.
-#[doc(hidden)]
-pub mod testing {
-    use crate::yaml::{Node, YamlError};
-
-    /// Only the line-oriented fast path; `None` when it defers to the full parser.
-    pub fn parse_fast(text: &str) -> Option<Node> {
-        let clean = crate::yaml::scanner::check_characters(text).ok()?;
-        crate::yaml::fast::parse_fast(text, clean)
+/// Python dict key equality for scalars: numbers compare by value across
+/// bool/int/float, NaN keys are all the same object in PyYAML (so equal).
+pub(crate) fn keys_equal(a: &Value, b: &Value) -> bool {
+    fn num(v: &Value) -> Option<Num> {
+        match *v {
+            Value::Bool(b) => Some(Num::I(b as i64)),
+            Value::Int(i) => Some(Num::I(i)),
+            Value::Float(f) => Some(Num::F(f)),
+            _ => None,
+        }
     }
-
-    /// Only the full PyYAML-faithful parser.
-    pub fn parse_full(text: &str) -> Result<Node, YamlError> {
-        crate::yaml::parser::parse_full(text)
+    enum Num {
+        I(i64),
+        F(f64),
+    }
+    match (a, b) {
+        (Value::Str(x), Value::Str(y)) => x == y,
+        (Value::Null, Value::Null) => true,
+        _ => match (num(a), num(b)) {
+            (Some(Num::I(x)), Some(Num::I(y))) => x == y,
+            (Some(Num::F(x)), Some(Num::F(y))) => x == y || (x.is_nan() && y.is_nan()),
+            (Some(Num::I(i)), Some(Num::F(f))) | (Some(Num::F(f)), Some(Num::I(i))) => {
+                // Exact comparison, as Python does (no rounding of large ints):
+                // only integral floats in i64's range [-2^63, 2^63) can be equal.
+                const TWO_63: f64 = 9_223_372_036_854_775_808.0;
+                f.fract() == 0.0 && (-TWO_63..TWO_63).contains(&f) && f as i64 == i
+            }
+            _ => false,
+        },
     }
 }

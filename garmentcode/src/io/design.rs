@@ -1,41 +1,12 @@
 //! Design files in the reference's format: reading into typed parameter structs and
 //! writing them back.
 
-use super::space::{at, from_node, insert, key, to_node};
-use super::{DesignSpace, Params, Value, join_path};
-use crate::yaml::{self, Node, Value as Y};
-use std::fmt;
-
-/// Problems found in a design file: each names the file, the position, the parameter
-/// path, the bad value and what is allowed.
-#[derive(Clone, Debug, PartialEq)]
-pub struct DesignError {
-    /// File name as given.
-    pub file: String,
-    /// One line per problem.
-    pub problems: Vec<String>,
-}
-
-impl DesignError {
-    pub(super) fn single(file: &str, problem: String) -> DesignError {
-        DesignError { file: file.to_string(), problems: vec![problem] }
-    }
-}
-
-impl fmt::Display for DesignError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.problems.len() == 1 {
-            return write!(f, "{}: {}", self.file, self.problems[0]);
-        }
-        write!(f, "{}: {} problems", self.file, self.problems.len())?;
-        for p in &self.problems {
-            write!(f, "\n  {p}")?;
-        }
-        Ok(())
-    }
-}
-
-impl std::error::Error for DesignError {}
+use super::design_error::DesignError;
+use super::design_space::{at, from_node, insert, key, to_node};
+use crate::params::space::DesignSpace;
+use crate::params::spec::Value;
+use crate::params::{Params, join_path};
+use crate::parity::yaml::{self, Node, Value as Y};
 
 /// Read a design file: the `v` of every parameter, checked against `space`;
 /// parameters the file omits take their default. Unknown keys, values of the wrong
@@ -121,7 +92,7 @@ fn edit_distance(a: &str, b: &str) -> usize {
 /// the design; every other file, and every file with a problem, goes through the
 /// full YAML reader and [`read_design_values`] (same result, and the errors).
 pub fn read_design<D: Params>(text: &str, file: &str, space: &DesignSpace) -> Result<D, DesignError> {
-    if let Some(d) = super::fast::read_design_fast(text, space) {
+    if let Some(d) = super::design_fast::read_design_fast(text, space) {
         return Ok(d);
     }
     read_design_full(text, file, space)

@@ -5,7 +5,7 @@
 //!
 //! The cases are the project's copy of the reference cases, `tests/data/cases`.
 
-use garmentcode::compare::{CompareOptions, Euler, Verdict, compare_case};
+use garmentcode_compare::{CompareOptions, Euler, Verdict, compare_case};
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};

@@ -1,4 +1,4 @@
-//! Outlines made of SVG segments, handled the way svgpathtools 1.8.0 handles a
+//! Reference parity: outlines made of SVG segments, handled the way svgpathtools 1.8.0 handles a
 //! `Path`, and the reference's split of closed outlines into the halves on either
 //! side of their vertical centre line (pygarment's `halfs_from_svg`), used by
 //! decorative cuts drawn from an SVG picture.
@@ -7,10 +7,12 @@
 //! the segments' shares of the total arc length, as in the library; lengths are
 //! exact to ~1e-13, so crossings and crops land where the reference's do.
 
+use super::segment::{P, Seg, try_intersect};
+use crate::arena::{Arena, EdgeSeq, VertexId};
 use crate::bezier::Bezier;
-use crate::intersect::svg::{P, Seg, try_intersect};
+use crate::edge::{Curve, Edge};
+use crate::error::{Error, Result};
 use crate::math::{Vec2, abs_to_rel};
-use crate::{Arena, Curve, EdgeSeq, Error, Result};
 
 /// A sequence of segments (svgpathtools' `Path`).
 #[derive(Clone, Debug, PartialEq)]
@@ -227,7 +229,7 @@ pub fn split_halves(paths: &[SvgPath]) -> Result<(Vec<SvgPath>, Vec<SvgPath>)> {
 /// curves keep their shape relative to their chords.
 pub fn edge_seq_from_path(a: &mut Arena, path: &SvgPath, dist_tol: f64) -> Result<EdgeSeq> {
     let mut out = EdgeSeq::new();
-    let mut prev_end: Option<(crate::VertexId, Vec2)> = None;
+    let mut prev_end: Option<(VertexId, Vec2)> = None;
     for seg in &path.0 {
         if seg_length(seg).abs() < dist_tol {
             continue;
@@ -239,7 +241,7 @@ pub fn edge_seq_from_path(a: &mut Arena, path: &SvgPath, dist_tol: f64) -> Resul
             Seg::Cubic([_, c1, c2, _]) => Curve::Cubic(abs_to_rel(start, end, v(c1)), abs_to_rel(start, end, v(c2))),
         };
         let e = match prev_end {
-            None => a.add_edge(crate::Edge { start, end, curve })?,
+            None => a.add_edge(Edge { start, end, curve })?,
             Some((vert, pos)) => {
                 if (start.x - pos.x).abs() >= dist_tol || (start.y - pos.y).abs() >= dist_tol {
                     return Err(geometry("the outline is not chained"));

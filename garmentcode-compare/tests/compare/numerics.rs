@@ -1,7 +1,7 @@
 //! The CPython float helpers against values CPython 3.11 computed on this platform
 //! (tests/data/py_numerics.txt). A one-off run over 200,000 random inputs found no
 //! mismatch; x * x differed from Python's x ** 2 in 145 of them, hence `py::sq`.
-use garmentcode::compare::py;
+use garmentcode_compare::py;
 
 #[test]
 fn helpers_match_cpython_bits() {

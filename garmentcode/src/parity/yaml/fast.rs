@@ -17,10 +17,9 @@
 //! and returning them by value made the CPU stall on store-to-load forwarding,
 //! which cost more than the parsing itself.
 
-use crate::yaml::parser::keys_equal;
-use crate::yaml::resolve::{Resolved, resolve_plain};
-use crate::yaml::scanner::MAX_DEPTH;
-use crate::yaml::{Node, Value};
+use crate::parity::yaml::node::{Node, Value, keys_equal};
+use crate::parity::yaml::resolve::{Resolved, resolve_plain};
+use crate::parity::yaml::scanner::MAX_DEPTH;
 
 /// One non-blank, non-comment line (or, for `- key: v`, the part from the key on).
 #[derive(Clone, Copy)]
