@@ -65,6 +65,9 @@ pub use garmentcode_derive::{Choice, Component, Params, component};
 pub mod __private {
     pub use crate::arena::{Arena, InterfaceId, PanelId};
     pub use crate::component::{Component, Interfaces, Node, Part, Parts, Slot};
-    pub use crate::params::{Choice, Kind, ParamSpec, ParamValue, Params, Range, Value, join_path};
+    pub use crate::params::{
+        CheckMessages, Choice, FieldInfo, FieldShape, Kind, Override, ParamSpec, ParamValue, Params, Range, Value, apply_overrides,
+        check_override, join_path, override_number,
+    };
     pub use crate::stitch::StitchRule;
 }

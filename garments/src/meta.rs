@@ -7,6 +7,7 @@ use crate::circle_skirt::SkirtCircle;
 use crate::design::{BottomKind, Design, GodetBase, LevelsBase, UpperKind, WaistbandKind};
 use crate::godet::GodetSkirt;
 use crate::pants::Pants;
+use crate::shared::Fit;
 use crate::skirt_levels::SkirtLevels;
 use crate::skirt_paneled::{PencilSkirt, Skirt2, SkirtManyPanels};
 use garmentcode::slots::{Bottom, Top};
@@ -83,7 +84,11 @@ impl MetaGarment {
         let upper: Option<Box<dyn UpperGarment>> = match meta.upper {
             None => None,
             Some(kind) => {
-                let s = Shirt::new(a, body, design, kind == UpperKind::FittedShirt)?;
+                let fit = match kind {
+                    UpperKind::Shirt => Fit::Loose,
+                    UpperKind::FittedShirt => Fit::Fitted,
+                };
+                let s = Shirt::new(a, body, &design.shirt, &design.collar, &design.sleeve, &design.left, fit)?;
                 s.set_panel_label(a, "body", false);
                 Some(Box::new(s))
             }

@@ -1,9 +1,10 @@
 //! `#[derive(Params)]`: schema, defaults and typed access by path.
 
 use crate::internals::number;
-use crate::internals::param::{Field, LeafType, parse_struct};
+use crate::internals::param::{Field, LeafType, Override, parse_struct};
 use proc_macro2::TokenStream;
 use quote::{quote, quote_spanned};
+use syn::ext::IdentExt;
 use syn::spanned::Spanned;
 use syn::{DeriveInput, Expr, GenericArgument, PathArguments, Type};
 
@@ -18,6 +19,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
             let never = super::placeholder_body();
             return quote! {
                 #err
+                #[automatically_derived]
                 impl #impl_g ::garmentcode::__private::Params for #ident #ty_g #where_g {
                     fn describe(_: &str, _: &mut ::std::vec::Vec<::garmentcode::__private::ParamSpec>) { #never }
                     fn defaults() -> Self { #never }
@@ -32,14 +34,38 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     let mut defaults = Vec::new();
     let mut gets = Vec::new();
     let mut sets = Vec::new();
+    let mut fields = Vec::new();
+    let mut checks = Vec::new();
     for field in &model.fields {
         match field {
             Field::Group(g) => {
                 let (fid, ty, name) = (&g.ident, &g.ty, &g.name);
-                describe.push(quote_spanned! {ty.span()=>
-                    <#ty as #p::Params>::describe(&#p::join_path(prefix, #name), out);
+                let field_name = fid.unraw().to_string();
+                fields.push(quote_spanned! {ty.span()=>
+                    #p::FieldInfo { field: #field_name, name: #name, shape: #p::FieldShape::Group(<#ty as #p::Params>::FIELDS) }
                 });
-                defaults.push(quote_spanned! {ty.span()=> #fid: <#ty as #p::Params>::defaults() });
+                if g.overrides.is_empty() {
+                    describe.push(quote_spanned! {ty.span()=>
+                        <#ty as #p::Params>::describe(&#p::join_path(prefix, #name), out);
+                    });
+                    defaults.push(quote_spanned! {ty.span()=> #fid: <#ty as #p::Params>::defaults() });
+                } else {
+                    let group = overridden_defaults(ty, &g.overrides);
+                    let specs = g.overrides.iter().map(override_spec);
+                    describe.push(quote_spanned! {ty.span()=>
+                        {
+                            let start = out.len();
+                            let prefix = #p::join_path(prefix, #name);
+                            <#ty as #p::Params>::describe(&prefix, out);
+                            let group: #ty = #group;
+                            #p::apply_overrides(out, start, &prefix, &group, &[#(#specs),*]);
+                        }
+                    });
+                    defaults.push(quote! { #fid: #group });
+                    if input.generics.params.is_empty() {
+                        checks.extend(g.overrides.iter().map(|o| override_check(ty, o)));
+                    }
+                }
                 gets.push(quote! { [#name, rest @ ..] => #p::Params::get_value(&self.#fid, rest) });
                 sets.push(quote! { [#name, rest @ ..] => #p::Params::set_value(&mut self.#fid, rest, v) });
             }
@@ -78,6 +104,18 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
                     (None, None) => (quote!(<#ty as #p::ParamValue>::KIND), quote!(#p::Range::Options(<#ty as #p::ParamValue>::options()))),
                 };
                 let span = ty.span();
+                let field_name = fid.unraw().to_string();
+                let own_range = match &l.range {
+                    Some((lo, hi)) => quote!(::std::option::Option::Some((#lo, #hi))),
+                    None => quote!(::std::option::Option::None),
+                };
+                fields.push(quote_spanned! {span=>
+                    #p::FieldInfo {
+                        field: #field_name,
+                        name: #name,
+                        shape: #p::FieldShape::Leaf { kind: <#ty as #p::ParamValue>::KIND, range: #own_range },
+                    }
+                });
                 describe.push(quote_spanned! {span=>
                     out.push(#p::ParamSpec {
                         path: #p::join_path(prefix, #name),
@@ -102,7 +140,9 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         }
     }
     quote! {
+        #[automatically_derived]
         impl #impl_g #p::Params for #ident #ty_g #where_g {
+            const FIELDS: &'static [#p::FieldInfo] = &[#(#fields),*];
             fn describe(prefix: &str, out: &mut ::std::vec::Vec<#p::ParamSpec>) {
                 #(#describe)*
             }
@@ -122,6 +162,93 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
                 }
             }
         }
+        #(#checks)*
+    }
+}
+
+/// The group's defaults with the overridden defaults set; every overridden field is
+/// named in a place expression, so the compiler reports an unknown one at its name.
+fn overridden_defaults(ty: &Type, overrides: &[Override]) -> TokenStream {
+    let p = quote!(::garmentcode::__private);
+    let sets = overrides.iter().map(|o| {
+        let path = &o.path;
+        match &o.default {
+            Some(e) => {
+                let value = match number(e) {
+                    Some((v, _)) => quote_spanned!(e.span()=> #p::override_number(#v)),
+                    None => quote_spanned!(e.span()=> #e),
+                };
+                quote_spanned!(o.span=> group.#(#path).* = #value;)
+            }
+            None => quote_spanned!(o.span=> let _ = &group.#(#path).*;),
+        }
+    });
+    let mutable = if overrides.iter().any(|o| o.default.is_some()) { quote!(mut) } else { quote!() };
+    quote_spanned! {ty.span()=>
+        {
+            let #mutable group = <#ty as #p::Params>::defaults();
+            #(#sets)*
+            group
+        }
+    }
+}
+
+/// The override as `apply_overrides` takes it.
+fn override_spec(o: &Override) -> TokenStream {
+    let p = quote!(::garmentcode::__private);
+    let path: Vec<String> = o.path.iter().map(|i| i.unraw().to_string()).collect();
+    let range = match o.range {
+        Some((lo, hi)) => quote!(::std::option::Option::Some((#lo, #hi))),
+        None => quote!(::std::option::Option::None),
+    };
+    let prob = match o.prob {
+        Some(Some(x)) => quote!(::std::option::Option::Some(::std::option::Option::Some(#x))),
+        Some(None) => quote!(::std::option::Option::Some(::std::option::Option::None)),
+        None => quote!(::std::option::Option::None),
+    };
+    let doc = match &o.doc {
+        Some(d) => quote!(::std::option::Option::Some(#d)),
+        None => quote!(::std::option::Option::None),
+    };
+    let (default, skip) = (o.default.is_some(), o.skip);
+    quote!(#p::Override { path: &[#(#path),*], range: #range, prob: #prob, doc: #doc, default: #default, skip: #skip })
+}
+
+/// A `const` that checks the override against the group's fields while compiling,
+/// reported at the override.
+fn override_check(ty: &Type, o: &Override) -> TokenStream {
+    let p = quote!(::garmentcode::__private);
+    let dotted = o.dotted();
+    let path: Vec<String> = o.path.iter().map(|i| i.unraw().to_string()).collect();
+    let leaf_only = o.default.is_some() || o.range.is_some() || o.prob.is_some();
+    let default = o.default.as_ref().and_then(number).map(|(v, _)| v);
+    let (default_q, shown) = match default {
+        Some(v) => (quote!(::std::option::Option::Some(#v)), v.to_string()),
+        None => (quote!(::std::option::Option::None), String::new()),
+    };
+    let range = match o.range {
+        Some((lo, hi)) => quote!(::std::option::Option::Some((#lo, #hi))),
+        None => quote!(::std::option::Option::None),
+    };
+    let not_a_parameter = format!("override of `{dotted}`: a nested group takes no default, range or prob (override its parameters)");
+    let not_numeric = format!("override of `{dotted}`: `range` applies to f64 and i64 parameters only");
+    let out_of_range = format!("override of `{dotted}`: default {shown} is outside the parameter's range");
+    let not_an_integer = format!("override of `{dotted}`: default {shown} of an i64 parameter is not an integer");
+    let span = o.default.as_ref().map(|e| e.span()).unwrap_or(o.span);
+    quote_spanned! {span=>
+        const _: () = #p::check_override(
+            <#ty as #p::Params>::FIELDS,
+            &[#(#path),*],
+            #leaf_only,
+            #default_q,
+            #range,
+            &#p::CheckMessages {
+                not_a_parameter: #not_a_parameter,
+                not_numeric: #not_numeric,
+                out_of_range: #out_of_range,
+                not_an_integer: #not_an_integer,
+            },
+        );
     }
 }
 

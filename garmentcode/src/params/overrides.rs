@@ -1,0 +1,215 @@
+//! Per-instance overrides of a reused parameter group.
+//!
+//! A nested group field may change some parameters of its instance of the group
+//! (`#[param(cuff(top_ruffle(range = 1..=2)))]`, see `#[derive(Params)]`). The derive
+//! checks the overrides while compiling ([`check_override`], against the group's
+//! [`Params::FIELDS`]) and applies them to the group's schema ([`apply_overrides`]) and
+//! defaults (plain field assignments).
+
+use super::{Kind, ParamSpec, Params, Range, join_path};
+
+/// One field of a parameter group: its Rust name, its name in design files and its shape.
+#[derive(Debug)]
+pub struct FieldInfo {
+    /// Rust field name (without `r#`).
+    pub field: &'static str,
+    /// Name in design files.
+    pub name: &'static str,
+    /// A parameter or a nested group.
+    pub shape: FieldShape,
+}
+
+/// What a field of a parameter group is.
+#[derive(Debug)]
+pub enum FieldShape {
+    /// A parameter of this type, with its numeric range if it has one.
+    Leaf {
+        /// Parameter type.
+        kind: Kind,
+        /// `range = lo..=hi` of numeric parameters.
+        range: Option<(f64, f64)>,
+    },
+    /// A nested group with these fields.
+    Group(&'static [FieldInfo]),
+}
+
+/// One override of a nested group field, as applied to the schema (the default is
+/// applied to the group's value by the derive, and read back from it here).
+#[derive(Debug)]
+pub struct Override {
+    /// Rust field path inside the group.
+    pub path: &'static [&'static str],
+    /// New range.
+    pub range: Option<(f64, f64)>,
+    /// New sampling probability (`Some(None)`: none).
+    pub prob: Option<Option<f64>>,
+    /// New description.
+    pub doc: Option<&'static str>,
+    /// The default changed.
+    pub default: bool,
+    /// Left out of the schema.
+    pub skip: bool,
+}
+
+const fn str_eq(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+const fn find(fields: &'static [FieldInfo], name: &str) -> Option<&'static FieldInfo> {
+    let mut i = 0;
+    while i < fields.len() {
+        if str_eq(fields[i].field, name) {
+            return Some(&fields[i]);
+        }
+        i += 1;
+    }
+    None
+}
+
+/// The field at a Rust field path.
+const fn lookup(fields: &'static [FieldInfo], path: &[&str]) -> Option<&'static FieldInfo> {
+    let mut fields = fields;
+    let mut i = 0;
+    loop {
+        let Some(f) = find(fields, path[i]) else { return None };
+        if i + 1 == path.len() {
+            return Some(f);
+        }
+        match &f.shape {
+            FieldShape::Group(inner) => fields = inner,
+            FieldShape::Leaf { .. } => return None,
+        }
+        i += 1;
+    }
+}
+
+/// Messages of [`check_override`], written by the derive with the override's path.
+#[derive(Debug)]
+pub struct CheckMessages {
+    /// The override sets a default or range on a nested group.
+    pub not_a_parameter: &'static str,
+    /// `range` on a parameter that is not a number.
+    pub not_numeric: &'static str,
+    /// The numeric default lies outside the (possibly overridden) range.
+    pub out_of_range: &'static str,
+    /// A fractional default for an integer parameter.
+    pub not_an_integer: &'static str,
+}
+
+/// Check an override against the group's fields at compile time (the derive calls it
+/// in a `const`). Unknown field names are left to the compiler, which reports them
+/// at the override's field name.
+pub const fn check_override(
+    fields: &'static [FieldInfo],
+    path: &[&str],
+    leaf_only: bool,
+    default: Option<f64>,
+    range: Option<(f64, f64)>,
+    msg: &CheckMessages,
+) {
+    let Some(f) = lookup(fields, path) else { return };
+    let FieldShape::Leaf { kind, range: own } = &f.shape else {
+        if leaf_only {
+            panic!("{}", msg.not_a_parameter);
+        }
+        return;
+    };
+    let numeric = matches!(kind, Kind::Float | Kind::Int);
+    if range.is_some() && !numeric {
+        panic!("{}", msg.not_numeric);
+    }
+    let Some(d) = default else { return };
+    if matches!(kind, Kind::Int) && d % 1.0 != 0.0 {
+        panic!("{}", msg.not_an_integer);
+    }
+    let bounds = match range {
+        Some(r) => Some(r),
+        None => *own,
+    };
+    if let Some((lo, hi)) = bounds
+        && (d < lo || d > hi)
+    {
+        panic!("{}", msg.out_of_range);
+    }
+}
+
+/// The design-file keys of a Rust field path.
+fn keys(fields: &'static [FieldInfo], path: &[&str]) -> Vec<&'static str> {
+    let mut fields = fields;
+    let mut out = Vec::new();
+    for name in path {
+        let f = fields.iter().find(|f| f.field == *name).unwrap_or_else(|| panic!("no parameter field `{name}` (checked by the derive)"));
+        out.push(f.name);
+        if let FieldShape::Group(inner) = &f.shape {
+            fields = inner;
+        }
+    }
+    out
+}
+
+/// Apply the overrides of the group instance at `prefix` to its specs, `out[start..]`;
+/// `group` is the instance's defaults (with the overridden defaults set).
+pub fn apply_overrides<G: Params>(out: &mut Vec<ParamSpec>, start: usize, prefix: &str, group: &G, overrides: &[Override]) {
+    for o in overrides {
+        let keys = keys(G::FIELDS, o.path);
+        let path = join_path(prefix, &keys.join("."));
+        if o.skip {
+            let below = format!("{path}.");
+            let tail = out.split_off(start);
+            out.extend(tail.into_iter().filter(|p| p.path != path && !p.path.starts_with(&below)));
+            continue;
+        }
+        let spec = out[start..].iter_mut().find(|p| p.path == path).unwrap_or_else(|| panic!("override of `{path}`: no such parameter"));
+        if let Some((lo, hi)) = o.range {
+            spec.range = Range::Numeric { lo, hi };
+        }
+        if let Some(p) = o.prob {
+            spec.default_prob = p;
+        }
+        if let Some(d) = o.doc {
+            spec.description = d.to_string();
+        }
+        if o.default {
+            spec.default = group.get_value(&keys).unwrap_or_else(|| panic!("override of `{path}`: no value"));
+        }
+    }
+}
+
+/// A number literal as the default of an `f64` or `i64` parameter.
+#[diagnostic::on_unimplemented(
+    message = "a number cannot be the default of a `{Self}` parameter",
+    label = "this override sets a number",
+    note = "numeric defaults apply to f64 and i64 parameters; write `true`/`false`, `Enum::Variant`, `Some(..)` or `None` for the others"
+)]
+pub trait OverrideNumber {
+    /// The literal's value.
+    fn from_literal(x: f64) -> Self;
+}
+
+impl OverrideNumber for f64 {
+    fn from_literal(x: f64) -> Self {
+        x
+    }
+}
+
+impl OverrideNumber for i64 {
+    fn from_literal(x: f64) -> Self {
+        x as i64
+    }
+}
+
+/// A number literal written in an override, as the field's type.
+pub fn override_number<T: OverrideNumber>(x: f64) -> T {
+    T::from_literal(x)
+}
