@@ -309,9 +309,10 @@ impl BodiceHalf {
     /// Build the half `name` (`right` or `left`) from its design groups.
     pub fn new(a: &mut Arena, name: &str, body: &Body, design: &HalfGroups<'_>, fit: Fit) -> Result<BodiceHalf> {
         let (ftorso, btorso) = match fit {
-            Fit::Fitted => {
-                (TorsoPanel::fitted_front(a, &format!("{name}_ftorso"), body)?, TorsoPanel::fitted_back(a, &format!("{name}_btorso"), body)?)
-            }
+            Fit::Fitted => (
+                TorsoPanel::fitted_front(a, &format!("{name}_ftorso"), body)?,
+                TorsoPanel::fitted_back(a, &format!("{name}_btorso"), body)?,
+            ),
             Fit::Loose => (
                 TorsoPanel::loose(a, &format!("{name}_ftorso"), body, design.shirt, Side::Front)?,
                 TorsoPanel::loose(a, &format!("{name}_btorso"), body, design.shirt, Side::Back)?,
@@ -566,5 +567,3 @@ impl Shirt {
         self.right.part_length(a)
     }
 }
-
-

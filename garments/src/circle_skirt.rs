@@ -2,7 +2,8 @@
 //! asymmetric (shorter in front) full-circle skirt.
 
 use crate::common::{eval_rise, register, v2, v3};
-use crate::design::Design;
+use crate::design::FlareSkirt;
+use crate::shared::{BottomOptions, Symmetry};
 use garmentcode::arc;
 use garmentcode::ops::{DartSize, cut_into_edge, dart_shape};
 use garmentcode::{Arena, Body, Component, Curve, EdgeSeq, InterfaceId, PanelId, Result, StitchRule};
@@ -206,25 +207,16 @@ pub struct SkirtCircle {
 }
 
 impl SkirtCircle {
-    /// Build from `flare-skirt` parameters; `length` and `rise` override them (tiers).
-    pub fn new(
-        a: &mut Arena,
-        body: &Body,
-        design: &Design,
-        tag: &str,
-        length: Option<f64>,
-        rise: Option<f64>,
-        slit: bool,
-        asymm: bool,
-    ) -> Result<SkirtCircle> {
-        let d = &design.flare_skirt;
-        let rise = rise.unwrap_or(d.rise);
+    /// Build from the `flare-skirt` group, symmetric or not, with `opts` (the hem cut
+    /// is its slit).
+    pub fn new(a: &mut Arena, body: &Body, d: &FlareSkirt, symmetry: Symmetry, opts: &BottomOptions) -> Result<SkirtCircle> {
+        let rise = opts.rise.unwrap_or(d.rise);
         let (waist, hips_depth, _) = eval_rise(body, rise)?;
-        let length = length.unwrap_or(hips_depth + d.length * body.derived().leg_length);
+        let length = opts.length.unwrap_or(hips_depth + d.length * body.derived().leg_length);
         let length = length.max(5.0);
-        let name = |base: &str| if tag.is_empty() { base.to_string() } else { format!("{base}_{tag}") };
+        let name = |base: &str| opts.name(base);
         let waist_level = body.derived().waist_level;
-        let (front, back) = if !asymm {
+        let (front, back) = if symmetry == Symmetry::Symmetric {
             let f = CircleArcPanel::from_w_length_suns(
                 a,
                 &name("skirt_front"),
@@ -252,7 +244,7 @@ impl SkirtCircle {
         };
         let (fp, ftop, fbottom, fleft, fright) = front.parts();
         let (bp, btop, bbottom, bleft, bright) = back.parts();
-        if d.cut.add && slit {
+        if d.cut.add && !opts.without_slits {
             if d.cut.place > 0.0 {
                 add_cut(a, fp, fbottom, d, length)?;
             } else {
@@ -271,7 +263,7 @@ impl SkirtCircle {
 }
 
 /// Cut an open slit into the hem of a circle-skirt panel.
-fn add_cut(a: &mut Arena, panel: PanelId, bottom: InterfaceId, d: &crate::design::FlareSkirt, sk_length: f64) -> Result<()> {
+fn add_cut(a: &mut Arena, panel: PanelId, bottom: InterfaceId, d: &FlareSkirt, sk_length: f64) -> Result<()> {
     let (width, depth) = (d.cut.width * sk_length, d.cut.depth * sk_length);
     let target = bottom.edges(a)[0];
     let t_len = a.edge_length(target);

@@ -7,7 +7,7 @@ use crate::circle_skirt::SkirtCircle;
 use crate::design::{BottomKind, Design, GodetBase, LevelsBase, UpperKind, WaistbandKind};
 use crate::godet::GodetSkirt;
 use crate::pants::Pants;
-use crate::shared::Fit;
+use crate::shared::{BottomOptions, Fit, SkirtGroups, Symmetry};
 use crate::skirt_levels::SkirtLevels;
 use crate::skirt_paneled::{PencilSkirt, Skirt2, SkirtManyPanels};
 use garmentcode::slots::{Bottom, Top};
@@ -105,7 +105,11 @@ impl MetaGarment {
             None => None,
             Some(kind) => {
                 let rise = lower.as_ref().map(|l| l.rise()).unwrap_or(1.0);
-                let wb = Waistband::new(a, body, design, rise, kind == WaistbandKind::FittedWB)?;
+                let fit = match kind {
+                    WaistbandKind::StraightWB => Fit::Loose,
+                    WaistbandKind::FittedWB => Fit::Fitted,
+                };
+                let wb = Waistband::new(a, body, &design.waistband, rise, fit)?;
                 if let Some(prev) = prev_bottom {
                     wb.place_by_interface(a, wb.top, prev, 5.0, Align::Center);
                     stitches.push(StitchRule::new(a, prev, wb.top)?);
@@ -137,15 +141,17 @@ impl MetaGarment {
 }
 
 fn build_bottom(a: &mut Arena, body: &Body, design: &Design, kind: BottomKind, rise: Option<f64>) -> Result<Box<dyn BottomGarment>> {
+    let opts = BottomOptions::at_rise(rise);
+    let skirts = SkirtGroups::of(design);
     Ok(match kind {
-        BottomKind::SkirtCircle => Box::new(SkirtCircle::new(a, body, design, "", None, rise, true, false)?),
-        BottomKind::AsymmSkirtCircle => Box::new(SkirtCircle::new(a, body, design, "", None, rise, true, true)?),
-        BottomKind::GodetSkirt => Box::new(GodetSkirt::new(a, body, design, rise)?),
-        BottomKind::Pants => Box::new(Pants::new(a, body, design, rise)?),
-        BottomKind::Skirt2 => Box::new(Skirt2::new(a, body, design, "", None, rise, true, true)?),
-        BottomKind::SkirtManyPanels => Box::new(SkirtManyPanels::new(a, body, design, rise)?),
-        BottomKind::PencilSkirt => Box::new(PencilSkirt::new(a, body, design, None, rise, true)?),
-        BottomKind::SkirtLevels => Box::new(SkirtLevels::new(a, body, design, rise)?),
+        BottomKind::SkirtCircle => Box::new(SkirtCircle::new(a, body, &design.flare_skirt, Symmetry::Symmetric, &opts)?),
+        BottomKind::AsymmSkirtCircle => Box::new(SkirtCircle::new(a, body, &design.flare_skirt, Symmetry::Asymmetric, &opts)?),
+        BottomKind::GodetSkirt => Box::new(GodetSkirt::new(a, body, &design.godet_skirt, skirts, &opts)?),
+        BottomKind::Pants => Box::new(Pants::new(a, body, &design.pants, &opts)?),
+        BottomKind::Skirt2 => Box::new(Skirt2::new(a, body, &design.skirt, &opts)?),
+        BottomKind::SkirtManyPanels => Box::new(SkirtManyPanels::new(a, body, &design.flare_skirt, &opts)?),
+        BottomKind::PencilSkirt => Box::new(PencilSkirt::new(a, body, &design.pencil_skirt, &opts)?),
+        BottomKind::SkirtLevels => Box::new(SkirtLevels::new(a, body, &design.levels_skirt, skirts, &opts)?),
     })
 }
 

@@ -2,7 +2,8 @@
 
 use crate::bands::{Cuff, CuffParams};
 use crate::common::{eval_rise, register, v2, v3};
-use crate::design::Design;
+use crate::design;
+use crate::shared::BottomOptions;
 use crate::skirt_paneled::{add_darts, tangent_curve};
 use garmentcode::math::close_enough;
 use garmentcode::{Align, Arena, Body, Component, Curve, EdgeSeq, Gather, InterfaceId, PanelId, PartExt, Result, StitchRule, Vec3};
@@ -54,7 +55,7 @@ pub struct PantSpec {
 
 impl PantPanel {
     /// Build one leg panel.
-    pub fn new(a: &mut Arena, name: &str, body: &Body, design: &crate::design::Pants, s: &PantSpec) -> Result<PantPanel> {
+    pub fn new(a: &mut Arena, name: &str, body: &Body, design: &design::Pants, s: &PantSpec) -> Result<PantPanel> {
         let flare = body.leg_circ * (design.flare - 1.0) / 4.0;
         let hips_depth = s.hips_depth * s.hipline_ext;
         let hip_side_incl = body.derived().hip_inclination.to_radians();
@@ -146,10 +147,9 @@ pub struct PantsHalf {
 }
 
 impl PantsHalf {
-    /// Build the leg `tag` (`r` or `l`).
-    pub fn new(a: &mut Arena, tag: &str, body: &Body, design: &Design, rise: Option<f64>) -> Result<PantsHalf> {
-        let d = &design.pants;
-        let rise = rise.unwrap_or(d.rise);
+    /// Build the leg `tag` (`r` or `l`) from the `pants` group with `opts` (its rise).
+    pub fn new(a: &mut Arena, tag: &str, body: &Body, d: &design::Pants, opts: &BottomOptions) -> Result<PantsHalf> {
+        let rise = opts.rise.unwrap_or(d.rise);
         let (waist, hips_depth, waist_back) = eval_rise(body, rise)?;
         let min_ext = body.leg_circ - body.hips / 2.0 + 5.0;
         let front_hip = (body.hips - body.hip_back_width) / 2.0;
@@ -271,10 +271,10 @@ pub struct Pants {
 }
 
 impl Pants {
-    /// Build both legs.
-    pub fn new(a: &mut Arena, body: &Body, design: &Design, rise: Option<f64>) -> Result<Pants> {
-        let right = PantsHalf::new(a, "r", body, design, rise)?;
-        let left = PantsHalf::new(a, "l", body, design, rise)?;
+    /// Build both legs from the `pants` group with `opts` (its rise).
+    pub fn new(a: &mut Arena, body: &Body, d: &design::Pants, opts: &BottomOptions) -> Result<Pants> {
+        let right = PantsHalf::new(a, "r", body, d, opts)?;
+        let left = PantsHalf::new(a, "l", body, d, opts)?;
         left.mirror(a);
         let stitches = vec![StitchRule::new(a, right.crotch_f, left.crotch_f)?, StitchRule::new(a, right.crotch_b, left.crotch_b)?];
         let top_f = a.interface_from(&[right.top_f, left.top_f]);

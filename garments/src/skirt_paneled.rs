@@ -2,8 +2,9 @@
 //! skirt with darts, slits and decorative side cuts.
 
 use crate::common::{eval_rise, register, tan_deg, v2, v3};
-use crate::design::{Design, SideCut};
+use crate::design::{self, SideCut};
 use crate::shapes;
+use crate::shared::BottomOptions;
 use garmentcode::curves::quadratic_from_tangents;
 use garmentcode::math::close_enough;
 use garmentcode::ops::{DartSize, cut_into_edge, cut_many_into_edge, dart_shape, distribute_y, side_with_cut};
@@ -191,13 +192,7 @@ pub struct FittedSkirtPanel {
 
 impl FittedSkirtPanel {
     /// Build the panel from the pencil-skirt design and the per-side spec.
-    pub fn new(
-        a: &mut Arena,
-        name: &str,
-        body: &Body,
-        design: &crate::design::PencilSkirt,
-        s: &FittedPanelSpec,
-    ) -> Result<FittedSkirtPanel> {
+    pub fn new(a: &mut Arena, name: &str, body: &Body, design: &design::PencilSkirt, s: &FittedPanelSpec) -> Result<FittedSkirtPanel> {
         let d = body.derived();
         let low_angle = design.low_angle as f64;
         let hip_side_incl = d.hip_inclination.to_radians();
@@ -395,10 +390,9 @@ pub struct PencilSkirt {
 }
 
 impl PencilSkirt {
-    /// Build from `pencil-skirt` parameters; `length` (which then includes the hip
-    /// depth) and `rise` override them; `slit = false` drops every slit.
-    pub fn new(a: &mut Arena, body: &Body, design: &Design, length: Option<f64>, rise: Option<f64>, slit: bool) -> Result<PencilSkirt> {
-        let d = &design.pencil_skirt;
+    /// Build from the `pencil-skirt` group with `opts` (a length there includes the
+    /// hip depth).
+    pub fn new(a: &mut Arena, body: &Body, d: &design::PencilSkirt, opts: &BottomOptions) -> Result<PencilSkirt> {
         let (shape_l, shape_r) = match d.style_side_cut {
             None => (None, None),
             Some(kind) => {
@@ -415,13 +409,13 @@ impl PencilSkirt {
                 }
             }
         };
-        let rise = rise.unwrap_or(d.rise);
+        let rise = opts.rise.unwrap_or(d.rise);
         let (waist, hips_depth, back_waist) = eval_rise(body, rise)?;
-        let length = match length {
+        let length = match opts.length {
             None => d.length * body.derived().leg_length,
             Some(l) => l - hips_depth,
         };
-        let pick = |x: f64| if slit { x } else { 0.0 };
+        let pick = |x: f64| if opts.without_slits { 0.0 } else { x };
         let waist_level = body.derived().waist_level;
         let front = FittedSkirtPanel::new(
             a,
@@ -530,26 +524,15 @@ pub struct Skirt2 {
 }
 
 impl Skirt2 {
-    /// Build from `skirt` parameters; `length` and `rise` override them; `slit` and
-    /// `top_ruffles = false` drop the side slits and the waist gathers (tiers).
-    pub fn new(
-        a: &mut Arena,
-        body: &Body,
-        design: &Design,
-        tag: &str,
-        length: Option<f64>,
-        rise: Option<f64>,
-        slit: bool,
-        top_ruffles: bool,
-    ) -> Result<Skirt2> {
-        let d = &design.skirt;
-        let rise = rise.unwrap_or(d.rise);
+    /// Build from the `skirt` group with `opts`.
+    pub fn new(a: &mut Arena, body: &Body, d: &design::Skirt, opts: &BottomOptions) -> Result<Skirt2> {
+        let rise = opts.rise.unwrap_or(d.rise);
         let (waist, hip_line, back_waist) = eval_rise(body, rise)?;
-        let length = length.unwrap_or(hip_line + d.length * body.derived().leg_length).max(5.0);
-        let name = |base: &str| if tag.is_empty() { base.to_string() } else { format!("{base}_{tag}") };
-        let ruffles = if top_ruffles { d.ruffle } else { 1.0 };
+        let length = opts.length.unwrap_or(hip_line + d.length * body.derived().leg_length).max(5.0);
+        let name = |base: &str| opts.name(base);
+        let ruffles = if opts.without_gathers { 1.0 } else { d.ruffle };
         // QUIRK: the slit is scaled by the length *parameter*, not the length in cm.
-        let bottom_cut = if slit { d.bottom_cut * d.length } else { 0.0 };
+        let bottom_cut = if opts.without_slits { 0.0 } else { d.bottom_cut * d.length };
         let waist_level = body.derived().waist_level;
         let flare = d.flare as f64;
         let front = SkirtPanel::new(
@@ -605,10 +588,9 @@ pub struct SkirtManyPanels {
 }
 
 impl SkirtManyPanels {
-    /// Build from `flare-skirt` parameters.
-    pub fn new(a: &mut Arena, body: &Body, design: &Design, rise: Option<f64>) -> Result<SkirtManyPanels> {
-        let d = &design.flare_skirt;
-        let rise = rise.unwrap_or(d.rise);
+    /// Build from the `flare-skirt` group with `opts` (its rise).
+    pub fn new(a: &mut Arena, body: &Body, d: &design::FlareSkirt, opts: &BottomOptions) -> Result<SkirtManyPanels> {
+        let rise = opts.rise.unwrap_or(d.rise);
         let (waist, hip_line, _) = eval_rise(body, rise)?;
         let n = d.skirt_many_panels.n_panels as usize;
         let length = (hip_line + d.length * body.derived().leg_length).max(5.0);

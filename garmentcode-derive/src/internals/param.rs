@@ -156,9 +156,9 @@ fn parse_override(meta: &syn::meta::ParseNestedMeta, path: Vec<Ident>, out: &mut
             "doc" => o.doc = Some(inner.value()?.parse()?),
             "skip" => o.skip = true,
             other => {
-                return Err(inner.error(format!(
-                    "unknown override `{other}` (expected default, range, prob, doc, skip or a nested `field(..)`)"
-                )));
+                return Err(
+                    inner.error(format!("unknown override `{other}` (expected default, range, prob, doc, skip or a nested `field(..)`)"))
+                );
             }
         }
         Ok(())
