@@ -40,6 +40,8 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         match field {
             Field::Group(g) => {
                 let (fid, ty, name) = (&g.ident, &g.ty, &g.name);
+                // Paths spanned at the field's type: a type error points there.
+                let p = quote_spanned!(ty.span()=> ::garmentcode::__private);
                 let field_name = fid.unraw().to_string();
                 fields.push(quote_spanned! {ty.span()=>
                     #p::FieldInfo { field: #field_name, name: #name, shape: #p::FieldShape::Group(<#ty as #p::Params>::FIELDS) }
@@ -63,14 +65,15 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
                     });
                     defaults.push(quote! { #fid: #group });
                     if input.generics.params.is_empty() {
-                        checks.extend(g.overrides.iter().map(|o| override_check(ty, o)));
+                        checks.extend(g.overrides.iter().filter_map(|o| override_check(ty, o)));
                     }
                 }
-                gets.push(quote! { [#name, rest @ ..] => #p::Params::get_value(&self.#fid, rest) });
-                sets.push(quote! { [#name, rest @ ..] => #p::Params::set_value(&mut self.#fid, rest, v) });
+                gets.push(quote_spanned! {ty.span()=> [#name, rest @ ..] => #p::Params::get_value(&self.#fid, rest) });
+                sets.push(quote_spanned! {ty.span()=> [#name, rest @ ..] => #p::Params::set_value(&mut self.#fid, rest, v) });
             }
             Field::Leaf(l) => {
                 let (fid, ty, name) = (&l.ident, &l.ty, &l.name);
+                let p = quote_spanned!(ty.span()=> ::garmentcode::__private);
                 let description = &l.description;
                 let default = default_expr(l.leaf_type, ty, &l.default);
                 let prob = match l.prob {
@@ -175,7 +178,7 @@ fn overridden_defaults(ty: &Type, overrides: &[Override]) -> TokenStream {
         match &o.default {
             Some(e) => {
                 let value = match number(e) {
-                    Some((v, _)) => quote_spanned!(e.span()=> #p::override_number(#v)),
+                    Some((v, _)) => quote_spanned!(e.span()=> ::garmentcode::__private::override_number(#v)),
                     None => quote_spanned!(e.span()=> #e),
                 };
                 quote_spanned!(o.span=> group.#(#path).* = #value;)
@@ -215,16 +218,21 @@ fn override_spec(o: &Override) -> TokenStream {
 }
 
 /// A `const` that checks the override against the group's fields while compiling,
-/// reported at the override.
-fn override_check(ty: &Type, o: &Override) -> TokenStream {
-    let p = quote!(::garmentcode::__private);
+/// reported at the override; none when there is nothing to check (`skip`, `doc`).
+fn override_check(ty: &Type, o: &Override) -> Option<TokenStream> {
     let dotted = o.dotted();
     let path: Vec<String> = o.path.iter().map(|i| i.unraw().to_string()).collect();
-    let leaf_only = o.default.is_some() || o.range.is_some() || o.prob.is_some();
+    if o.default.is_none() && o.range.is_none() && o.prob.is_none() {
+        return None;
+    }
     let default = o.default.as_ref().and_then(number).map(|(v, _)| v);
-    let (default_q, shown) = match default {
-        Some(v) => (quote!(::std::option::Option::Some(#v)), v.to_string()),
-        None => (quote!(::std::option::Option::None), String::new()),
+    let (default_q, out_of_range, not_an_integer) = match default {
+        Some(v) => (
+            quote!(::std::option::Option::Some(#v)),
+            format!("override of `{dotted}`: default {v} is outside the parameter's range"),
+            format!("override of `{dotted}`: default {v} of an i64 parameter is not an integer"),
+        ),
+        None => (quote!(::std::option::Option::None), String::new(), String::new()),
     };
     let range = match o.range {
         Some((lo, hi)) => quote!(::std::option::Option::Some((#lo, #hi))),
@@ -232,24 +240,21 @@ fn override_check(ty: &Type, o: &Override) -> TokenStream {
     };
     let not_a_parameter = format!("override of `{dotted}`: a nested group takes no default, range or prob (override its parameters)");
     let not_numeric = format!("override of `{dotted}`: `range` applies to f64 and i64 parameters only");
-    let out_of_range = format!("override of `{dotted}`: default {shown} is outside the parameter's range");
-    let not_an_integer = format!("override of `{dotted}`: default {shown} of an i64 parameter is not an integer");
-    let span = o.default.as_ref().map(|e| e.span()).unwrap_or(o.span);
-    quote_spanned! {span=>
-        const _: () = #p::check_override(
-            <#ty as #p::Params>::FIELDS,
+    let span = o.default.as_ref().filter(|e| number(e).is_some()).map(|e| e.span()).unwrap_or(o.span);
+    Some(quote_spanned! {span=>
+        const _: () = ::garmentcode::__private::check_override(
+            <#ty as ::garmentcode::__private::Params>::FIELDS,
             &[#(#path),*],
-            #leaf_only,
             #default_q,
             #range,
-            &#p::CheckMessages {
+            &::garmentcode::__private::CheckMessages {
                 not_a_parameter: #not_a_parameter,
                 not_numeric: #not_numeric,
                 out_of_range: #out_of_range,
                 not_an_integer: #not_an_integer,
             },
         );
-    }
+    })
 }
 
 /// The default as a Rust expression of the field's type, spanned at the author's

@@ -107,23 +107,19 @@ pub struct CheckMessages {
     pub not_an_integer: &'static str,
 }
 
-/// Check an override against the group's fields at compile time (the derive calls it
-/// in a `const`). Unknown field names are left to the compiler, which reports them
+/// Check an override that sets a default, range or probability against the group's
+/// fields at compile time (the derive calls it in a `const`). Unknown field names are left to the compiler, which reports them
 /// at the override's field name.
 pub const fn check_override(
     fields: &'static [FieldInfo],
     path: &[&str],
-    leaf_only: bool,
     default: Option<f64>,
     range: Option<(f64, f64)>,
     msg: &CheckMessages,
 ) {
     let Some(f) = lookup(fields, path) else { return };
     let FieldShape::Leaf { kind, range: own } = &f.shape else {
-        if leaf_only {
-            panic!("{}", msg.not_a_parameter);
-        }
-        return;
+        panic!("{}", msg.not_a_parameter);
     };
     let numeric = matches!(kind, Kind::Float | Kind::Int);
     if range.is_some() && !numeric {
