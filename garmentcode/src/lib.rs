@@ -66,8 +66,8 @@ pub mod __private {
     pub use crate::arena::{Arena, InterfaceId, PanelId};
     pub use crate::component::{Component, Interfaces, Node, Part, Parts, Slot};
     pub use crate::params::{
-        CheckMessages, Choice, FieldInfo, FieldShape, Kind, Override, ParamSpec, ParamValue, Params, Range, Value, apply_overrides,
-        check_override, join_path, override_number,
+        Choice, FieldInfo, FieldShape, Kind, Override, OverrideProblem, ParamSpec, ParamValue, Params, Range, Value, apply_overrides,
+        join_path, override_number, override_problem,
     };
     pub use crate::stitch::StitchRule;
 }

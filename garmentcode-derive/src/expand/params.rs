@@ -226,34 +226,33 @@ fn override_check(ty: &Type, o: &Override) -> Option<TokenStream> {
         return None;
     }
     let default = o.default.as_ref().and_then(number).map(|(v, _)| v);
-    let (default_q, out_of_range, not_an_integer) = match default {
-        Some(v) => (
-            quote!(::std::option::Option::Some(#v)),
-            format!("override of `{dotted}`: default {v} is outside the parameter's range"),
-            format!("override of `{dotted}`: default {v} of an i64 parameter is not an integer"),
-        ),
-        None => (quote!(::std::option::Option::None), String::new(), String::new()),
+    let default_q = match default {
+        Some(v) => quote!(::std::option::Option::Some(#v)),
+        None => quote!(::std::option::Option::None),
     };
     let range = match o.range {
         Some((lo, hi)) => quote!(::std::option::Option::Some((#lo, #hi))),
         None => quote!(::std::option::Option::None),
     };
+    let shown = default.map(|v| v.to_string()).unwrap_or_default();
     let not_a_parameter = format!("override of `{dotted}`: a nested group takes no default, range or prob (override its parameters)");
     let not_numeric = format!("override of `{dotted}`: `range` applies to f64 and i64 parameters only");
+    let not_an_integer = format!("override of `{dotted}`: default {shown} of an i64 parameter is not an integer");
+    let out_of_range = format!("override of `{dotted}`: default {shown} is outside the parameter's range");
     let span = o.default.as_ref().filter(|e| number(e).is_some()).map(|e| e.span()).unwrap_or(o.span);
     Some(quote_spanned! {span=>
-        const _: () = ::garmentcode::__private::check_override(
+        const _: () = match ::garmentcode::__private::override_problem(
             <#ty as ::garmentcode::__private::Params>::FIELDS,
             &[#(#path),*],
             #default_q,
             #range,
-            &::garmentcode::__private::CheckMessages {
-                not_a_parameter: #not_a_parameter,
-                not_numeric: #not_numeric,
-                out_of_range: #out_of_range,
-                not_an_integer: #not_an_integer,
-            },
-        );
+        ) {
+            ::garmentcode::__private::OverrideProblem::None => {}
+            ::garmentcode::__private::OverrideProblem::NotAParameter => ::core::panic!(#not_a_parameter),
+            ::garmentcode::__private::OverrideProblem::NotNumeric => ::core::panic!(#not_numeric),
+            ::garmentcode::__private::OverrideProblem::NotAnInteger => ::core::panic!(#not_an_integer),
+            ::garmentcode::__private::OverrideProblem::OutOfRange => ::core::panic!(#out_of_range),
+        };
     })
 }
 

@@ -25,7 +25,7 @@ pub use sample::{Sampler, below, sample_rng};
 
 /// Support of the derive's per-instance overrides; not part of the stable API.
 #[doc(hidden)]
-pub use overrides::{CheckMessages, FieldInfo, FieldShape, Override, OverrideNumber, apply_overrides, check_override, override_number};
+pub use overrides::{FieldInfo, FieldShape, Override, OverrideNumber, OverrideProblem, apply_overrides, override_number, override_problem};
 
 /// Testing aids; not part of the stable API.
 #[doc(hidden)]

@@ -2,7 +2,7 @@
 //!
 //! A nested group field may change some parameters of its instance of the group
 //! (`#[param(cuff(top_ruffle(range = 1..=2)))]`, see `#[derive(Params)]`). The derive
-//! checks the overrides while compiling ([`check_override`], against the group's
+//! checks the overrides while compiling ([`override_problem`], against the group's
 //! [`Params::FIELDS`]) and applies them to the group's schema ([`apply_overrides`]) and
 //! defaults (plain field assignments).
 
@@ -94,40 +94,41 @@ const fn lookup(fields: &'static [FieldInfo], path: &[&str]) -> Option<&'static 
     }
 }
 
-/// Messages of [`check_override`], written by the derive with the override's path.
-#[derive(Debug)]
-pub struct CheckMessages {
-    /// The override sets a default or range on a nested group.
-    pub not_a_parameter: &'static str,
+/// What is wrong with an override, found by [`override_problem`].
+#[derive(Debug, PartialEq, Eq)]
+pub enum OverrideProblem {
+    /// Nothing (or an unknown field name, which the compiler reports itself).
+    None,
+    /// The override sets a default, range or probability on a nested group.
+    NotAParameter,
     /// `range` on a parameter that is not a number.
-    pub not_numeric: &'static str,
-    /// The numeric default lies outside the (possibly overridden) range.
-    pub out_of_range: &'static str,
+    NotNumeric,
     /// A fractional default for an integer parameter.
-    pub not_an_integer: &'static str,
+    NotAnInteger,
+    /// The numeric default lies outside the (possibly overridden) range.
+    OutOfRange,
 }
 
 /// Check an override that sets a default, range or probability against the group's
-/// fields at compile time (the derive calls it in a `const`). Unknown field names are left to the compiler, which reports them
-/// at the override's field name.
-pub const fn check_override(
+/// fields at compile time: the derive matches the answer in a `const` and panics
+/// there, at the override, with a message naming it.
+pub const fn override_problem(
     fields: &'static [FieldInfo],
     path: &[&str],
     default: Option<f64>,
     range: Option<(f64, f64)>,
-    msg: &CheckMessages,
-) {
-    let Some(f) = lookup(fields, path) else { return };
+) -> OverrideProblem {
+    let Some(f) = lookup(fields, path) else { return OverrideProblem::None };
     let FieldShape::Leaf { kind, range: own } = &f.shape else {
-        panic!("{}", msg.not_a_parameter);
+        return OverrideProblem::NotAParameter;
     };
     let numeric = matches!(kind, Kind::Float | Kind::Int);
     if range.is_some() && !numeric {
-        panic!("{}", msg.not_numeric);
+        return OverrideProblem::NotNumeric;
     }
-    let Some(d) = default else { return };
+    let Some(d) = default else { return OverrideProblem::None };
     if matches!(kind, Kind::Int) && d % 1.0 != 0.0 {
-        panic!("{}", msg.not_an_integer);
+        return OverrideProblem::NotAnInteger;
     }
     let bounds = match range {
         Some(r) => Some(r),
@@ -136,8 +137,9 @@ pub const fn check_override(
     if let Some((lo, hi)) = bounds
         && (d < lo || d > hi)
     {
-        panic!("{}", msg.out_of_range);
+        return OverrideProblem::OutOfRange;
     }
+    OverrideProblem::None
 }
 
 /// The design-file keys of a Rust field path.
