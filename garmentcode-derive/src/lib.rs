@@ -2,8 +2,8 @@
 //! parameters (`Params`, `Choice`) and components (`Component`, `#[component]`).
 //!
 //! Shaped like `serde_derive`: attributes are parsed into a model that keeps spans
-//! ([`internals`]), validated with errors at the author's tokens, then code is
-//! generated ([`expand`]). Generated code names the runtime crate through its hidden
+//! (`internals`), validated with errors at the author's tokens, then code is
+//! generated (`expand`). Generated code names the runtime crate through its hidden
 //! re-export `::garmentcode::__private`, so authors depend on `garmentcode` alone.
 //! On an error the macro emits the error plus a minimal impl, so one mistake does not
 //! cascade into unrelated errors.

@@ -425,7 +425,7 @@ impl BodiceHalf {
     /// Cut the neckline into the torso panels (the collar's panels come later: see
     /// [`BodiceHalf::add_collar`]).
     fn cut_neckline(&mut self, a: &mut Arena, design: &HalfGroups<'_>, r: &Resolved) -> Result<Neckline> {
-        let shapes = Collar::necklines(a, &design.collar, r)?;
+        let shapes = Collar::necklines(a, design.collar, r)?;
         let (_, front) = cut_corner(a, &shapes.0, self.ftorso.collar_corner)?;
         let (_, back) = cut_corner(a, &shapes.1, self.btorso.collar_corner)?;
         Ok(Neckline { shapes, front, back })
@@ -434,7 +434,7 @@ impl BodiceHalf {
     /// Build the collar over the neckline cut by [`BodiceHalf::cut_neckline`].
     fn add_collar(&mut self, a: &mut Arena, body: &Body, design: &HalfGroups<'_>, r: &Resolved, neckline: Neckline) -> Result<()> {
         let Neckline { shapes, front: fc, back: bc } = neckline;
-        let collar = Collar::new(a, &self.name, body, &design.collar, r, shapes)?;
+        let collar = Collar::new(a, &self.name, body, design.collar, r, shapes)?;
         if let Some(bottom) = collar.bottom() {
             let both = a.interface_from(&[fc, bc]);
             self.stitches.push(StitchRule::new(a, both, bottom)?);
