@@ -56,8 +56,12 @@ fn paper_skirt_builds_from_its_design_file() {
 
     let mut a = Arena::new();
     let skirt = paper_skirt::FlareSkirt::new(&mut a, &body, &design.skirt).unwrap();
-    assert_eq!(skirt.interface_names(), ["top"]);
-    assert_eq!(skirt.interface("top"), Some(skirt.top));
+    assert_eq!(skirt.interfaces(), [("top", skirt.top)]);
+    // Every panel is a ThinSkirtPanel with interfaces of its own panel.
+    for p in &skirt.panels {
+        assert_eq!(p.interfaces().iter().map(|(n, _)| *n).collect::<Vec<_>>(), ["right", "top", "left"]);
+        assert!(p.interfaces().iter().all(|(_, i)| i.panels(&a) == [p.panel]));
+    }
     assert!((skirt.top.length(&a) - body.waist).abs() < 1e-9, "the waistline is the body's waist");
     let pattern = skirt.assemble(&mut a, "paper_skirt").unwrap();
     let names: Vec<&str> = pattern.panels.iter().map(|p| p.name.as_str()).collect();

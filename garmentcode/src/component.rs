@@ -11,6 +11,7 @@ use crate::arena::{Arena, InterfaceId, PanelId};
 use crate::error::{Error, Result};
 use crate::math::Vec3;
 use crate::pattern::Pattern;
+use crate::remap::Remap;
 use crate::rotation::Rotation;
 use crate::stitch::{StitchRecord, StitchRule};
 
@@ -24,6 +25,11 @@ pub enum Node<'a> {
 }
 
 /// Something placeable and assemblable: a panel, a panel class or a component.
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not a garment part",
+    label = "not a panel, panel class or component",
+    note = "add `#[derive(Component)]` (or `#[component]`) to the type: a struct with a `#[panel]` field is a panel class, one with `#[part]` fields a component, an enum of parts a choice between them"
+)]
 pub trait Part {
     /// This part as a panel or a component.
     fn node(&self) -> Node<'_>;
@@ -47,7 +53,25 @@ impl<T: Part + ?Sized> Part for Box<T> {
     }
 }
 
+/// A part that is one panel: a [`PanelId`], or a panel class (a struct with a
+/// `#[panel]` field, for which `#[derive(Component)]` implements this trait).
+pub trait PanelPart: Part {
+    /// The panel.
+    fn panel_id(&self) -> PanelId;
+}
+
+impl PanelPart for PanelId {
+    fn panel_id(&self) -> PanelId {
+        *self
+    }
+}
+
 /// A garment component: an ordered set of sub-parts plus the stitches between them.
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not a component",
+    label = "no `#[derive(Component)]` with `#[part]` fields",
+    note = "add `#[derive(Component)]` to a struct whose `#[part]` fields hold its panels and sub-components"
+)]
 pub trait Component {
     /// Name of the component (informational; panel names are what is written).
     fn name(&self) -> String;
@@ -66,12 +90,21 @@ pub trait Component {
     }
 }
 
-/// Interfaces a component or panel class exposes, by name (for tools).
+/// The interfaces a component or panel class exposes (its `#[interface]` fields)
+/// with their names, in declaration order: for tools that list or inspect parts.
+/// Garment code uses the fields themselves (or [`Slot`]), never names.
 pub trait Interfaces {
-    /// An interface by name; `None` if there is no such interface.
-    fn interface(&self, name: &str) -> Option<InterfaceId>;
-    /// Names of the exposed interfaces, in declaration order.
-    fn interface_names(&self) -> &'static [&'static str];
+    /// `(name, interface)` of every exposed interface (an absent optional one is
+    /// left out).
+    fn interfaces(&self) -> Vec<(&'static str, InterfaceId)>;
+}
+
+/// A bare panel exposes no named interfaces (its interfaces are
+/// [`PanelId::interfaces`]).
+impl Interfaces for PanelId {
+    fn interfaces(&self) -> Vec<(&'static str, InterfaceId)> {
+        Vec::new()
+    }
 }
 
 /// A component that fills slot `S` (a marker type from [`crate::slots`] or your
@@ -115,6 +148,11 @@ impl<T: ?Sized> SlotExt for T {}
 
 /// Collects `&dyn Part`s from component fields of various shapes (a part, an
 /// optional part, a list of parts); used by the derive macro.
+#[diagnostic::on_unimplemented(
+    message = "a `#[part]` field of type `{Self}` holds no garment parts",
+    label = "expected a part, `Option` of a part or `Vec` of parts",
+    note = "a `#[part]` field holds a `PanelId`, a type with `#[derive(Component)]`, or an `Option`/`Vec`/`Box` of those"
+)]
 pub trait Parts {
     /// Visit every part held by this field.
     fn visit_parts(&self, f: &mut dyn FnMut(&dyn Part));
@@ -324,6 +362,15 @@ pub trait PartExt: Part {
         let mut out = Vec::new();
         self.node().panels(&mut out);
         out
+    }
+
+    /// A deep copy: the same type over new panels, edges and interfaces (see
+    /// [`Arena::copy_part`]).
+    fn deep_copy(&self, a: &mut Arena) -> Self
+    where
+        Self: Remap + Sized,
+    {
+        a.copy_part(self)
     }
 
     /// Move down so that this part's top sits `gap` below `other`'s bottom.

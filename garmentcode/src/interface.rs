@@ -70,7 +70,9 @@ impl Arena {
         d
     }
 
-    /// A new interface over `edges` of `panel`, flat (no gathers).
+    /// A new interface over `edges` of `panel`, flat (no gathers). The panel keeps a
+    /// list of the interfaces made over it ([`PanelId::interfaces`]): a corner cut
+    /// updates them and a copy of the panel copies them.
     pub fn interface(&mut self, panel: PanelId, edges: impl Into<EdgeSeq>) -> InterfaceId {
         self.interface_gathered(panel, edges, Gather::Uniform(1.0)).expect("uniform gathers always fit")
     }
@@ -103,7 +105,10 @@ impl Arena {
         d.right_wrong.resize(n, false);
         d.flipping.resize(n, false);
         self.interfaces.push(d);
-        Ok(InterfaceId((self.interfaces.len() - 1) as u32))
+        let id = InterfaceId((self.interfaces.len() - 1) as u32);
+        // The panel knows its interfaces: a corner cut updates them, a copy copies them.
+        self.pd_mut(panel).interfaces.push(id);
+        Ok(id)
     }
 
     /// A new interface concatenating others (their edges, panels, flags and gather

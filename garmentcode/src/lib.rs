@@ -35,6 +35,7 @@ pub mod ops;
 pub mod panel;
 pub mod params;
 pub mod pattern;
+mod remap;
 pub mod rotation;
 pub mod seq;
 pub mod slots;
@@ -44,13 +45,14 @@ pub mod yaml;
 
 pub use arena::{Arena, EdgeId, InterfaceId, PanelId, VertexId};
 pub use body::Body;
-pub use component::{Align, Component, Interfaces, Node, Part, PartExt, Parts, Slot, SlotExt};
+pub use component::{Align, Component, Interfaces, Node, PanelPart, Part, PartExt, Parts, Slot, SlotExt};
 pub use edge::{Curve, Edge};
 pub use error::{Error, Result};
 pub use interface::{Gather, Ruffle};
 pub use math::{Vec2, Vec3};
 pub use params::{Choice, DesignSpace, Params};
 pub use pattern::Pattern;
+pub use remap::{IdMap, Remap};
 pub use rotation::Rotation;
 pub use seq::EdgeSeq;
 pub use stitch::StitchRule;
@@ -64,10 +66,11 @@ pub use garmentcode_derive::{Choice, Component, Params, component};
 #[doc(hidden)]
 pub mod __private {
     pub use crate::arena::{Arena, InterfaceId, PanelId};
-    pub use crate::component::{Component, Interfaces, Node, Part, Parts, Slot};
+    pub use crate::component::{Component, Interfaces, Node, PanelPart, Part, Parts, Slot};
     pub use crate::params::{
         Choice, FieldInfo, FieldShape, Kind, Override, OverrideProblem, ParamSpec, ParamValue, Params, Range, Value, apply_overrides,
         join_path, override_number, override_problem,
     };
+    pub use crate::remap::{IdMap, Remap};
     pub use crate::stitch::StitchRule;
 }

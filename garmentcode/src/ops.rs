@@ -3,10 +3,12 @@
 //! sleeve-opening balancing.
 
 use crate::arena::{Arena, EdgeId, InterfaceId, PanelId, VertexId};
+use crate::component::{PanelPart, PartExt};
 use crate::edge::{Curve, Segment};
 use crate::error::{Error, Result};
 use crate::intersect;
 use crate::math::{SignumOrZero, Vec2, Vec3, close_enough, cross, norm, vector_angle};
+use crate::remap::Remap;
 use crate::rotation::Rotation;
 use crate::seq::EdgeSeq;
 
@@ -246,12 +248,21 @@ fn fit_location_on_edge(curve: &Segment, t: f64, width: f64) -> ([f64; 2], f64) 
     (s, objective(r))
 }
 
+/// Result of [`cut_corner`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct CornerCut {
+    /// The inserted copy of the shape, in the panel's loop.
+    pub shape: EdgeSeq,
+    /// A new interface of the panel over the inserted shape.
+    pub interface: InterfaceId,
+}
+
 /// Replace the corner between the two edges of `corner` (an interface of one panel)
 /// by a copy of `shape`, placed so that its opening vector spans the corner. Every
 /// interface of the panel that used the corner edges now uses their remaining
-/// pieces; a new interface over the inserted shape is registered with the panel
-/// (named `int_<n>`) and returned with the shape's edges.
-pub fn cut_corner(a: &mut Arena, shape: &EdgeSeq, corner: InterfaceId) -> Result<(EdgeSeq, InterfaceId)> {
+/// pieces; a new interface of the panel over the inserted shape is returned with
+/// the shape's edges.
+pub fn cut_corner(a: &mut Arena, shape: &EdgeSeq, corner: InterfaceId) -> Result<CornerCut> {
     let mut corner_shape = shape.copy(a);
     let panel: PanelId = corner.panels(a)[0];
     {
@@ -296,16 +307,14 @@ pub fn cut_corner(a: &mut Arena, shape: &EdgeSeq, corner: InterfaceId) -> Result
     let res = loop_edges.remove_edge(e0).and_then(|_| loop_edges.substitute(e1, &corner_shape));
     *panel.edges_mut(a) = loop_edges;
     res?;
-    let registered: Vec<InterfaceId> = panel.interfaces(a).iter().map(|(_, i)| *i).collect();
+    let registered: Vec<InterfaceId> = panel.interfaces(a).to_vec();
     for i in registered {
         i.replace_edge(a, e0, cut1);
         i.replace_edge(a, e1, cut2);
     }
     let inserted = corner_shape.slice(1, -1);
-    let new_int = a.interface(panel, inserted.clone());
-    let name = format!("int_{}", panel.interfaces(a).len());
-    panel.add_interface(a, &name, new_int);
-    Ok((inserted, new_int))
+    let interface = a.interface(panel, inserted.clone());
+    Ok(CornerCut { shape: inserted, interface })
 }
 
 /// Parameters `(l0, l1)` in `[0, 1]²` minimising `|c2(l1) − c1(l0) − opening|²`.
@@ -374,35 +383,39 @@ fn fit_location_on_corner(c1: &Segment, c2: &Segment, opening: Vec2) -> [f64; 2]
     l
 }
 
-/// Copies of a panel distributed around the world y axis: the original is renamed
-/// `<tag>_0`, copy `i` is copy `i−1` rotated by 360°/n about y.
-pub fn distribute_y(a: &mut Arena, panel: PanelId, n: usize, tag: &str) -> Vec<PanelId> {
-    panel.set_name(a, &format!("{tag}_0"));
+/// Copies of a panel (or panel class) distributed around the world y axis: the
+/// original is renamed `<tag>_0`, copy `i` is copy `i−1` rotated by 360°/n about y.
+/// Each copy is the same type as the original, with its own interfaces.
+pub fn distribute_y<T: PanelPart + Remap>(a: &mut Arena, first: T, n: usize, tag: &str) -> Vec<T> {
+    first.panel_id().set_name(a, &format!("{tag}_0"));
     let q = Rotation::from_euler_xyz_degrees([0.0, 360.0 / n as f64, 0.0]);
-    let mut out = vec![panel];
+    let mut out = vec![first];
     for i in 1..n {
-        let prev = *out.last().expect("at least one panel");
-        let p = prev.deep_copy(a, &format!("{tag}_{i}"));
+        let copy = out.last().expect("at least one panel").deep_copy(a);
+        let p = copy.panel_id();
+        p.set_name(a, &format!("{tag}_{i}"));
         p.rotate_by(a, q);
         let t = q.apply(p.translation(a));
         p.translate_to(a, t);
-        out.push(p);
+        out.push(copy);
     }
     out
 }
 
-/// Copies of a panel in a horizontal row, `stride` apart along the horizontal
-/// direction in the panel plane: the original is renamed `<tag>_0`.
-pub fn distribute_horizontally(a: &mut Arena, panel: PanelId, n: usize, stride: f64, tag: &str) -> Vec<PanelId> {
+/// Copies of a panel (or panel class) in a horizontal row, `stride` apart along the
+/// horizontal direction in the panel plane: the original is renamed `<tag>_0`.
+pub fn distribute_horizontally<T: PanelPart + Remap>(a: &mut Arena, first: T, n: usize, stride: f64, tag: &str) -> Vec<T> {
+    let panel = first.panel_id();
     panel.set_name(a, &format!("{tag}_0"));
     let dir = panel.rotation(a).apply(Vec3::Z).cross(Vec3::Y);
     let delta = dir / dir.length() * stride;
-    let mut out = vec![panel];
+    let mut out = vec![first];
     for i in 1..n {
-        let prev = *out.last().expect("at least one panel");
-        let p = prev.deep_copy(a, &format!("{tag}_{i}"));
+        let copy = out.last().expect("at least one panel").deep_copy(a);
+        let p = copy.panel_id();
+        p.set_name(a, &format!("{tag}_{i}"));
         p.translate_by(a, delta);
-        out.push(p);
+        out.push(copy);
     }
     out
 }
@@ -511,14 +524,13 @@ mod tests {
         let p = a.new_panel("p");
         p.set_edges(&mut a, edges.clone());
         let corner = a.interface(p, EdgeSeq(vec![edges[0], edges[1]]));
-        p.add_interface(&mut a, "corner", corner);
         let shape = EdgeSeq::from_points(&mut a, &[v(0., 0.), v(3., 1.), v(4., 4.)], false).unwrap();
-        let (inserted, int) = cut_corner(&mut a, &shape, corner).unwrap();
+        let CornerCut { shape: inserted, interface: int } = cut_corner(&mut a, &shape, corner).unwrap();
         assert_eq!(inserted.len(), 2);
         let loop_edges = p.edges(&a).clone();
         assert_eq!(loop_edges.len(), 6);
         assert!(loop_edges.is_loop(&a) && loop_edges.is_chained(&a));
-        assert_eq!(p.interface(&a, "int_1"), Some(int));
+        assert_eq!(p.interfaces(&a), &[corner, int], "the new interface belongs to the panel");
         let start = a.pos(a.start(inserted[0]));
         let end = a.pos(a.end(inserted[1]));
         assert!((end - start - v(4., 4.)).length() < 1e-9);

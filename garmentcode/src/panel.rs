@@ -20,9 +20,10 @@ pub(crate) struct PanelData {
     pub translation: Vec3,
     pub rotation: Rotation,
     pub edges: EdgeSeq,
-    /// Named interfaces registered with the panel, in insertion order (corner cuts
-    /// update all of them and add new ones named `int_<n>`).
-    pub interfaces: Vec<(String, InterfaceId)>,
+    /// The interfaces made over this panel's edges, in creation order (every
+    /// [`Arena::interface`] over the panel adds one; a corner cut updates all of
+    /// them and adds the one over the inserted shape).
+    pub interfaces: Vec<InterfaceId>,
     /// Stitches inside the panel (darts).
     pub stitches: Vec<StitchRule>,
     /// When set, the panel's "length" is this interface's length instead of its
@@ -111,23 +112,8 @@ impl PanelId {
         a.pd(self).rotation
     }
 
-    /// Register a named interface with the panel.
-    pub fn add_interface(self, a: &mut Arena, name: &str, i: InterfaceId) {
-        let d = a.pd_mut(self);
-        if let Some(slot) = d.interfaces.iter_mut().find(|(n, _)| n == name) {
-            slot.1 = i;
-        } else {
-            d.interfaces.push((name.to_string(), i));
-        }
-    }
-
-    /// A registered interface by name.
-    pub fn interface(self, a: &Arena, name: &str) -> Option<InterfaceId> {
-        a.pd(self).interfaces.iter().find(|(n, _)| n == name).map(|(_, i)| *i)
-    }
-
-    /// Names and ids of the registered interfaces.
-    pub fn interfaces(self, a: &Arena) -> &[(String, InterfaceId)] {
+    /// The interfaces made over this panel's edges, in creation order.
+    pub fn interfaces(self, a: &Arena) -> &[InterfaceId] {
         &a.pd(self).interfaces
     }
 
@@ -381,42 +367,6 @@ impl PanelId {
             return Err(crate::Error::SelfIntersecting { panel: self.name(a).to_string() });
         }
         Ok(())
-    }
-
-    /// Deep copy under a new name: new edges, vertices, interfaces and darts.
-    pub fn deep_copy(self, a: &mut Arena, name: &str) -> PanelId {
-        let src = a.pd(self).clone();
-        let new_edges = a.copy_edges(&src.edges);
-        let map: Vec<(EdgeId, EdgeId)> = src.edges.iter().copied().zip(new_edges.iter().copied()).collect();
-        let new = a.new_panel(name);
-        let map_iface = |a: &mut Arena, i: InterfaceId| -> InterfaceId {
-            let mut d = a.iface(i).clone();
-            for e in d.edges.iter_mut() {
-                if let Some((_, n)) = map.iter().find(|(o, _)| o == e) {
-                    *e = *n;
-                }
-            }
-            for p in d.panels.iter_mut() {
-                if *p == self {
-                    *p = new;
-                }
-            }
-            a.interfaces.push(d);
-            InterfaceId((a.interfaces.len() - 1) as u32)
-        };
-        let interfaces: Vec<(String, InterfaceId)> = src.interfaces.iter().map(|(n, i)| (n.clone(), map_iface(a, *i))).collect();
-        let stitches: Vec<StitchRule> = src.stitches.iter().map(|r| StitchRule { a: map_iface(a, r.a), b: map_iface(a, r.b) }).collect();
-        let length_interface =
-            src.length_interface.map(|i| src.interfaces.iter().position(|(_, j)| *j == i).map(|k| interfaces[k].1).unwrap_or(i));
-        let d = a.pd_mut(new);
-        d.label = src.label;
-        d.translation = src.translation;
-        d.rotation = src.rotation;
-        d.edges = EdgeSeq(new_edges);
-        d.interfaces = interfaces;
-        d.stitches = stitches;
-        d.length_interface = length_interface;
-        new
     }
 }
 

@@ -2,7 +2,7 @@
 //! with its sleeve and collar, and the shirts made of two halves.
 
 use crate::collars::Collar;
-use crate::common::{register, tan_deg, v2, v3};
+use crate::common::{tan_deg, v2, v3};
 use crate::design::{self, CollarComponent};
 use crate::shared::{Fit, Resolved, Side};
 use crate::sleeves::Sleeve;
@@ -69,20 +69,8 @@ impl TorsoPanel {
         }
     }
 
-    fn finish(a: &mut Arena, panel: PanelId, ifaces: [InterfaceId; 6], width: f64, rule: WidthRule) -> TorsoPanel {
+    fn finish(panel: PanelId, ifaces: [InterfaceId; 6], width: f64, rule: WidthRule) -> TorsoPanel {
         let [outside, inside, shoulder, bottom, shoulder_corner, collar_corner] = ifaces;
-        register(
-            a,
-            panel,
-            &[
-                ("outside", outside),
-                ("inside", inside),
-                ("shoulder", shoulder),
-                ("bottom", bottom),
-                ("shoulder_corner", shoulder_corner),
-                ("collar_corner", collar_corner),
-            ],
-        );
         TorsoPanel { panel, outside, inside, shoulder, bottom, shoulder_corner, collar_corner, width, rule }
     }
 
@@ -112,7 +100,6 @@ impl TorsoPanel {
         let shoulder_corner = a.interface(panel, EdgeSeq(vec![edges.at(-3), edges.at(-2)]));
         let collar_corner = a.interface(panel, EdgeSeq(vec![edges.at(-2), edges.at(-1)]));
         let t = TorsoPanel::finish(
-            a,
             panel,
             [outside, inside, shoulder, bottom, shoulder_corner, collar_corner],
             width,
@@ -170,8 +157,7 @@ impl TorsoPanel {
         let bottom = a.interface(panel, b_interface);
         let shoulder_corner = a.interface(panel, EdgeSeq(vec![edges.at(-3), edges.at(-2)]));
         let collar_corner = a.interface(panel, EdgeSeq(vec![edges.at(-2), edges.at(-1)]));
-        let t =
-            TorsoPanel::finish(a, panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::SideSlope);
+        let t = TorsoPanel::finish(panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::SideSlope);
         panel.translate_by(a, v3(0.0, body.height - body.head_l - max_len - shoulder_incl, 0.0));
         Ok(t)
     }
@@ -203,8 +189,7 @@ impl TorsoPanel {
         let mut bottom = a.interface(panel, edges[0]);
         let shoulder_corner = a.interface(panel, EdgeSeq(vec![edges.at(-3), edges.at(-2)]));
         let collar_corner = a.interface(panel, EdgeSeq(vec![edges.at(-2), edges.at(-1)]));
-        let t =
-            TorsoPanel::finish(a, panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::Constant);
+        let t = TorsoPanel::finish(panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::Constant);
         // Darts, when the back waist is narrower than the back (QUIRK: the width is
         // the constant half back width whatever the level).
         if waist < t.get_width(a, body, 0.0) {
@@ -226,7 +211,6 @@ impl TorsoPanel {
             loop_edges.substitute_at(0, &b_edge);
             panel.set_edges(a, loop_edges);
             bottom = a.interface(panel, b_interface);
-            panel.add_interface(a, "bottom", bottom);
             let corner = a.end(b_edge.last_edge());
             let p = a.pos(corner);
             a.set_pos(corner, Vec2::new(p.x + side_adj, p.y));
@@ -393,8 +377,8 @@ impl BodiceHalf {
         let front_w = self.ftorso.get_width(a, body, r.connecting_width);
         let back_w = self.btorso.get_width(a, body, r.connecting_width);
         let sleeve = Sleeve::armholes(a, &self.name, body, design.sleeve, r.connecting_width, front_w, back_w)?;
-        let (_, front) = cut_corner(a, &sleeve.in_front_shape, self.ftorso.shoulder_corner)?;
-        let (_, back) = cut_corner(a, &sleeve.in_back_shape, self.btorso.shoulder_corner)?;
+        let front = cut_corner(a, &sleeve.in_front_shape, self.ftorso.shoulder_corner)?.interface;
+        let back = cut_corner(a, &sleeve.in_back_shape, self.btorso.shoulder_corner)?.interface;
         self.sleeve = Some(sleeve);
         Ok(Armholes { front, back, front_w, back_w })
     }
@@ -426,8 +410,8 @@ impl BodiceHalf {
     /// [`BodiceHalf::add_collar`]).
     fn cut_neckline(&mut self, a: &mut Arena, design: &HalfGroups<'_>, r: &Resolved) -> Result<Neckline> {
         let shapes = Collar::necklines(a, design.collar, r)?;
-        let (_, front) = cut_corner(a, &shapes.0, self.ftorso.collar_corner)?;
-        let (_, back) = cut_corner(a, &shapes.1, self.btorso.collar_corner)?;
+        let front = cut_corner(a, &shapes.0, self.ftorso.collar_corner)?.interface;
+        let back = cut_corner(a, &shapes.1, self.btorso.collar_corner)?.interface;
         Ok(Neckline { shapes, front, back })
     }
 

@@ -1,7 +1,7 @@
 //! Circle skirts: annulus-sector panels, the symmetric circle skirt and the
 //! asymmetric (shorter in front) full-circle skirt.
 
-use crate::common::{eval_rise, register, v2, v3};
+use crate::common::{eval_rise, v2, v3};
 use crate::design::FlareSkirt;
 use crate::shared::{BottomOptions, Symmetry};
 use garmentcode::arc;
@@ -73,7 +73,6 @@ impl CircleArcPanel {
         let bottom = a.interface_gathered(panel, edges[2], bottom_ruffle)?;
         let left = a.interface(panel, edges[1]);
         let right = a.interface(panel, edges[3]);
-        register(a, panel, &[("top", top), ("bottom", bottom), ("left", left), ("right", right)]);
         panel.set_length_interface(a, right);
         Ok(CircleArcPanel { panel, top, bottom, left, right })
     }

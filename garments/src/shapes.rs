@@ -5,7 +5,6 @@
 use crate::common::v2;
 use crate::design::NeckShape;
 use garmentcode::arc::{self, SvgArc};
-use garmentcode::bezier::Bezier;
 use garmentcode::curves::match_tangents;
 use garmentcode::math::{Vec2, close_enough, norm};
 use garmentcode::svgpath::{SvgPath, halves_from_outlines};
@@ -113,9 +112,7 @@ pub fn sleeve_opening(a: &mut Arena, incl: f64, width: f64, angle: f64, bottom_a
     let left = v2(-1.0, 0.0);
     let mix = bottom_angle_mix;
     let dir = (1.0 - mix) * rotated_dir + if mix > 0.0 { mix * down } else { -mix * left };
-    let abs = inv.abs_controls();
-    let fitted = match_tangents([inv.start, abs[0], abs[1], inv.end], down, dir, cut.length());
-    let opening = Edge::from_bezier(&Bezier::Cubic(fitted)).reversed();
+    let opening = match_tangents(&inv, down, dir, cut.length()).reversed();
     Ok(EdgeSeq(vec![a.add_edge(opening)?]))
 }
 

@@ -1,7 +1,7 @@
 //! Paneled skirts: the two-panel skirt, the many-gore skirt and the fitted pencil
 //! skirt with darts, slits and decorative side cuts.
 
-use crate::common::{eval_rise, register, tan_deg, v2, v3};
+use crate::common::{eval_rise, tan_deg, v2, v3};
 use crate::design::{self, SideCut};
 use crate::shapes;
 use crate::shared::BottomOptions;
@@ -16,8 +16,8 @@ use std::f64::consts::PI;
 /// A quadratic edge between two vertices with end tangents fitted as the reference's
 /// `curve_from_tangents` does.
 pub(crate) fn tangent_curve(a: &mut Arena, s: VertexId, e: VertexId, t0: Option<Vec2>, t1: Option<Vec2>, guess: Vec2) -> Result<EdgeId> {
-    let cp = quadratic_from_tangents(a.pos(s), a.pos(e), t0, t1, guess);
-    a.edge(s, e, Curve::Quadratic(cp))
+    let curve = quadratic_from_tangents(a.pos(s), a.pos(e), t0, t1, guess);
+    a.edge(s, e, curve)
 }
 
 /// One panel of a two-panel skirt: a trapezoid with an optionally gathered waist and
@@ -85,7 +85,6 @@ impl SkirtPanel {
         let top = a.interface_gathered(panel, waist, ruffle)?.reverse(a, true);
         let l = a.interface(panel, left[0]);
         let b = a.interface(panel, bottom);
-        register(a, panel, &[("right", r), ("top", top), ("left", l), ("bottom", b)]);
         panel.top_center_pivot(a);
         panel.center_x(a);
         Ok(SkirtPanel { panel, right: r, top, left: l, bottom: b })
@@ -98,6 +97,18 @@ pub struct ThinSkirtPanel {
     /// The panel.
     #[panel]
     pub panel: PanelId,
+    /// Side towards the previous gore.
+    #[interface]
+    pub right: InterfaceId,
+    /// Waist.
+    #[interface]
+    pub top: InterfaceId,
+    /// Side towards the next gore.
+    #[interface]
+    pub left: InterfaceId,
+    /// Hem.
+    #[interface]
+    pub bottom: InterfaceId,
 }
 
 impl ThinSkirtPanel {
@@ -124,8 +135,7 @@ impl ThinSkirtPanel {
         let top = a.interface(panel, edges[1]);
         let left = a.interface(panel, edges[2]);
         let bottom = a.interface(panel, edges.last_edge());
-        register(a, panel, &[("right", right), ("top", top), ("left", left), ("bottom", bottom)]);
-        Ok(ThinSkirtPanel { panel })
+        Ok(ThinSkirtPanel { panel, right, top, left, bottom })
     }
 }
 
@@ -275,7 +285,6 @@ impl FittedSkirtPanel {
         set_flip(a, left_i, 0);
         let last = right.len() - 1;
         set_flip(a, right_i, last);
-        register(a, panel, &[("bottom", bottom_i), ("right", right_i), ("left", left_i)]);
         let top_i = if w_diff > hw_shift {
             let (top_edges, int_edges) = add_darts(a, panel, top, w_diff - hw_shift, dart_depth, s.dart_position, s.double_dart, true)?;
             let ruffle = s.match_top_int_to.map(|m| int_edges.length(a) / m).unwrap_or(1.0);
@@ -288,7 +297,6 @@ impl FittedSkirtPanel {
             let ruffle = s.match_top_int_to.map(|m| a.edge_length(top) / m).unwrap_or(1.0);
             a.interface_gathered(panel, top, ruffle)?
         };
-        register(a, panel, &[("top", top_i)]);
         Ok(FittedSkirtPanel { panel, bottom: bottom_i, right: right_i, left: left_i, top: top_i })
     }
 }
@@ -576,7 +584,7 @@ impl Skirt2 {
 pub struct SkirtManyPanels {
     /// The gores, `skirt_panel_0..n`.
     #[part]
-    pub panels: Vec<PanelId>,
+    pub panels: Vec<ThinSkirtPanel>,
     /// Waist.
     #[interface]
     pub top: InterfaceId,
@@ -598,27 +606,23 @@ impl SkirtManyPanels {
         let panel_w = waist / n as f64;
         let front = ThinSkirtPanel::new(a, "front", panel_w, panel_w * flare_coeff_pi, length, d.skirt_many_panels.panel_curve)?;
         let p = front.panel;
-        let bottom = p.interface(a, "bottom").expect("registered");
-        let dist = bottom.length(a) / (2.0 * (PI / n as f64).tan());
+        let dist = front.bottom.length(a) / (2.0 * (PI / n as f64).tan());
         p.translate_to(a, v3(-dist, body.derived().waist_level, 0.0));
         p.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, -90.0, 0.0]));
         p.rotate_align(a, v3(-dist, 0.0, panel_w / 2.0));
-        p.interface(a, "top").expect("registered").reverse(a, true);
-        let panels = distribute_y(a, p, n, "skirt_panel");
-        let iface = |a: &Arena, p: PanelId, name: &str| p.interface(a, name).expect("registered");
+        front.top.reverse(a, true);
+        let panels = distribute_y(a, front, n, "skirt_panel");
         let mut stitches = Vec::with_capacity(n);
         for i in 1..n {
-            let (l, r) = (iface(a, panels[i - 1], "left"), iface(a, panels[i], "right"));
-            stitches.push(StitchRule::new(a, l, r)?);
+            stitches.push(StitchRule::new(a, panels[i - 1].left, panels[i].right)?);
         }
-        let (l, r) = (iface(a, panels[n - 1], "left"), iface(a, panels[0], "right"));
-        stitches.push(StitchRule::new(a, l, r)?);
-        let tops: Vec<InterfaceId> = panels.iter().map(|p| iface(a, *p, "top")).collect();
+        stitches.push(StitchRule::new(a, panels[n - 1].left, panels[0].right)?);
+        let tops: Vec<InterfaceId> = panels.iter().map(|p| p.top).collect();
         let top = a.interface_from(&tops);
         Ok(SkirtManyPanels { panels, top, stitches, rise })
     }
 
     fn skirt_length(&self, a: &Arena) -> f64 {
-        self.panels[0].length(a)
+        self.panels[0].panel.length(a)
     }
 }
