@@ -6,7 +6,7 @@ use crate::circle_skirt::CircleArcPanel;
 use crate::common::{v2, v3};
 use crate::design::{self, CollarStyle, NeckShape};
 use crate::shapes::{self, NeckArgs};
-use crate::shared::Resolved;
+use crate::shared::{GatherTo, Resolved};
 use garmentcode::curves::match_tangents;
 use garmentcode::{Arena, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, PanelId, Result, Rotation, StitchRule};
 
@@ -226,9 +226,9 @@ impl Collar {
                 let depth = c.component.depth as f64;
                 let (lf, lb) = (f.length(a), b.length(a));
                 let hp = body.height - body.head_l + depth;
-                let front = StraightBandPanel::new(a, &format!("{tag}_collar_front"), lf, depth, None)?;
+                let front = StraightBandPanel::new(a, &format!("{tag}_collar_front"), lf, depth, GatherTo::NONE)?;
                 front.panel.translate_by(a, v3(-lf / 2.0, hp, 10.0));
-                let back = StraightBandPanel::new(a, &format!("{tag}_collar_back"), lb, depth, None)?;
+                let back = StraightBandPanel::new(a, &format!("{tag}_collar_back"), lb, depth, GatherTo::NONE)?;
                 back.panel.translate_by(a, v3(-lb / 2.0, hp, -10.0));
                 let stitches = vec![StitchRule::new(a, front.right, back.right)?];
                 let bottom = a.interface_from(&[front.bottom, back.bottom]);
@@ -242,13 +242,13 @@ impl Collar {
                 let front = SimpleLapelPanel::new(a, &format!("{tag}_collar_front"), lf, depth)?;
                 front.panel.translate_by(a, v3(-depth * 2.0, hp, 35.0));
                 let (back_panel, back_right, back_left, back_bottom) = if c.component.lapel_standing {
-                    let back = StraightBandPanel::new(a, &format!("{tag}_collar_back"), lb, depth, None)?;
+                    let back = StraightBandPanel::new(a, &format!("{tag}_collar_back"), lb, depth, GatherTo::NONE)?;
                     back.panel.translate_by(a, v3(-lb / 2.0, hp, -10.0));
                     back.right.set_right_wrong(a, true);
                     (back.panel, back.right, back.left, back.bottom)
                 } else {
                     let (rad, angle, _) = a.geom(b[0]).arc_radius_angle().expect("a circular neckline");
-                    let back = CircleArcPanel::new(a, &format!("{tag}_collar_back"), rad, depth, angle, None, None)?;
+                    let back = CircleArcPanel::new(a, &format!("{tag}_collar_back"), rad, depth, angle, GatherTo::NONE)?;
                     back.panel.translate_by(a, v3(-lb, hp, -10.0));
                     back.panel.rotate_by(a, Rotation::from_euler_xyz_degrees([90.0, 45.0, 0.0]));
                     let top = back.top.set_right_wrong(a, true);

@@ -3,8 +3,8 @@
 use crate::bands::{Cuff, CuffParams};
 use crate::common::{eval_rise, v2, v3};
 use crate::design;
-use crate::shared::BottomOptions;
-use crate::skirt_paneled::{add_darts, tangent_curve};
+use crate::shared::{BottomOptions, Darts};
+use crate::skirt_paneled::{DartsFrom, add_darts, tangent_curve};
 use garmentcode::math::close_enough;
 use garmentcode::slots::Top;
 use garmentcode::{
@@ -52,8 +52,8 @@ pub struct PantSpec {
     pub match_top_int_to: Option<f64>,
     /// Extension of the hip depth (back).
     pub hipline_ext: f64,
-    /// Two darts.
-    pub double_dart: bool,
+    /// One or two darts.
+    pub darts: Darts,
 }
 
 impl PantPanel {
@@ -100,7 +100,7 @@ impl PantPanel {
         let bottom_i = a.interface(panel, bottom);
         let ruffle = s.match_top_int_to.map(|m| s.waist / m).unwrap_or(1.0);
         let top_i = if w_diff > hw_shift {
-            let (top_edges, int_edges) = add_darts(a, panel, top, w_diff - hw_shift, dart_depth, s.dart_position, s.double_dart, false)?;
+            let (top_edges, int_edges) = add_darts(a, panel, top, w_diff - hw_shift, dart_depth, s.dart_position, s.darts, DartsFrom::End)?;
             let i = a.interface_gathered(panel, int_edges, ruffle)?;
             let mut loop_edges = panel.edges(a).clone();
             loop_edges.substitute(top, &top_edges)?;
@@ -184,7 +184,7 @@ impl PantsHalf {
                 dart_position: body.bust_points / 2.0,
                 match_top_int_to: Some((body.waist - body.waist_back_width) / 2.0),
                 hipline_ext: 1.0,
-                double_dart: false,
+                darts: Darts::Single,
             },
         )?;
         front.panel.translate_by(a, v3(0.0, level - 5.0, 25.0));
@@ -202,7 +202,7 @@ impl PantsHalf {
                 dart_position: body.bum_points / 2.0,
                 match_top_int_to: Some(body.waist_back_width / 2.0),
                 hipline_ext: 1.1,
-                double_dart: true,
+                darts: Darts::Double,
             },
         )?;
         back.panel.translate_by(a, v3(0.0, level - 5.0, -20.0));

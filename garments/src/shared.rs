@@ -104,3 +104,37 @@ impl<'a> SkirtGroups<'a> {
         SkirtGroups { skirt: &d.skirt, flare_skirt: &d.flare_skirt, pencil_skirt: &d.pencil_skirt }
     }
 }
+
+/// The body lengths a panel's top and bottom interfaces are gathered to (the seam
+/// they are sewn to); none: not gathered.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct GatherTo {
+    /// Length the top interface is gathered to.
+    pub top: Option<f64>,
+    /// Length the bottom interface is gathered to.
+    pub bottom: Option<f64>,
+}
+
+impl GatherTo {
+    /// Not gathered.
+    pub const NONE: GatherTo = GatherTo { top: None, bottom: None };
+
+    /// Only the top, to `length`.
+    pub fn top(length: f64) -> GatherTo {
+        GatherTo { top: Some(length), bottom: None }
+    }
+
+    /// Top and bottom, both to `length`.
+    pub fn both(length: f64) -> GatherTo {
+        GatherTo { top: Some(length), bottom: Some(length) }
+    }
+}
+
+/// One or two darts on each side of a waist.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Darts {
+    /// One dart.
+    Single,
+    /// Two darts, the outer one shorter.
+    Double,
+}
