@@ -10,7 +10,7 @@
 use std::f64::consts::PI;
 
 use garmentcode::draw::{DrawOptions, to_svg};
-use garmentcode::ops::{DartSize, dart_shape};
+use garmentcode::ops::{Cut, DartSize, EdgeSide, dart_shape};
 use garmentcode::{
     Arena, Component, EdgeSeq, IdMap, InterfaceId, Node, PanelId, PanelPart, Part, PartExt, Remap, Rotation, StitchRule, Vec2, Vec3,
 };
@@ -113,7 +113,7 @@ fn gore(a: &mut Arena, top_width: f64, hem_width: f64) -> garmentcode::Result<Go
     let panel = a.panel_with_edges("gore", outline.clone());
     let dart = dart_shape(a, DART_WIDTH, DartSize::Depth(DART_DEPTH))?;
     let offset = a.edge_length(top_edge) / 2.0;
-    let (with_dart, top_pieces) = panel.add_dart(a, &dart, top_edge, offset, true)?;
+    let Cut { edges: with_dart, leftovers: top_pieces, .. } = panel.add_dart(a, &dart, top_edge, offset, EdgeSide::Right)?;
     outline.substitute(top_edge, with_dart.as_slice())?;
     panel.set_edges(a, outline);
 

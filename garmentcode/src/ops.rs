@@ -52,7 +52,25 @@ pub fn side_with_cut(a: &mut Arena, start: VertexId, end: VertexId, start_cut: f
     EdgeSeq::polyline(a, &verts, false)
 }
 
-/// Result of [`cut_into_edge`].
+/// Which side of an edge, looking along its direction, a shape is cut into.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EdgeSide {
+    /// To the right of `start → end`.
+    Right,
+    /// To the left of `start → end`.
+    Left,
+}
+
+/// How [`cut_many_into_edge`] takes its shapes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShapeOrder {
+    /// As drawn.
+    AsDrawn,
+    /// Mirrored (their order along the edge reversed) first.
+    Mirrored,
+}
+
+/// Result of [`cut_into_edge`] (and of [`PanelId::add_dart`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Cut {
     /// Every edge replacing the base edge, in order.
@@ -65,9 +83,10 @@ pub struct Cut {
 
 /// Insert a copy of `shape` (an open chain) into `base`, centred at arc length
 /// `offset` from its start, rotated so its opening lies along the edge and placed on
-/// the `right` (or left) of the edge direction. The base edge itself is not changed;
+/// the given `side` of the edge direction. The base edge itself is not changed;
 /// the caller substitutes [`Cut::edges`] for it where needed.
-pub fn cut_into_edge(a: &mut Arena, shape: &EdgeSeq, base: EdgeId, offset: f64, right: bool) -> Result<Cut> {
+pub fn cut_into_edge(a: &mut Arena, shape: &EdgeSeq, base: EdgeId, offset: f64, side: EdgeSide) -> Result<Cut> {
+    let right = side == EdgeSide::Right;
     const TOL: f64 = 1e-2;
     let mut new_edges = shape.copy(a);
     new_edges.snap_to(a, Vec2::ZERO);
@@ -146,8 +165,9 @@ pub fn cut_into_edge(a: &mut Arena, shape: &EdgeSeq, base: EdgeId, offset: f64, 
 }
 
 /// Several shapes (drawn in one frame with vertical openings) cut into one edge,
-/// keeping their relative positions; `flip` mirrors them first.
-pub fn cut_many_into_edge(a: &mut Arena, shapes: &[EdgeSeq], base: EdgeId, offset: f64, right: bool, flip: bool) -> Result<Cut> {
+/// keeping their relative positions.
+pub fn cut_many_into_edge(a: &mut Arena, shapes: &[EdgeSeq], base: EdgeId, offset: f64, side: EdgeSide, order: ShapeOrder) -> Result<Cut> {
+    let flip = order == ShapeOrder::Mirrored;
     let ys = |a: &Arena, s: &EdgeSeq| {
         let (p, q) = s.shortcut(a);
         (p.y, q.y)
@@ -187,7 +207,7 @@ pub fn cut_many_into_edge(a: &mut Arena, shapes: &[EdgeSeq], base: EdgeId, offse
     let mut all = EdgeSeq(vec![base]);
     let mut shape_edges = EdgeSeq::new();
     for (off, i) in placed {
-        let cut = cut_into_edge(a, &shapes[i], proj_edge, off, right)?;
+        let cut = cut_into_edge(a, &shapes[i], proj_edge, off, side)?;
         all.substitute(proj_edge, &cut.edges)?;
         leftovers.substitute(proj_edge, &cut.leftovers)?;
         shape_edges.extend(cut.shape.iter().copied());
@@ -486,7 +506,7 @@ mod tests {
         let mut a = Arena::new();
         let base = a.line(v(0., 0.), v(20., 0.)).unwrap();
         let dart = dart_shape(&mut a, 4.0, DartSize::Depth(6.0)).unwrap();
-        let cut = cut_into_edge(&mut a, &dart, base, 10.0, true).unwrap();
+        let cut = cut_into_edge(&mut a, &dart, base, 10.0, EdgeSide::Right).unwrap();
         assert_eq!(cut.edges.len(), 4);
         assert_eq!(cut.shape.len(), 2);
         assert_eq!(cut.leftovers.len(), 2);
@@ -495,10 +515,10 @@ mod tests {
         assert!((tip - v(10., -6.)).length() < 1e-9, "tip {tip}");
         assert!((a.pos(a.start(cut.shape[0])) - v(8., 0.)).length() < 1e-9);
         // Same shape on the left of the edge.
-        let cut = cut_into_edge(&mut a, &dart, base, 10.0, false).unwrap();
+        let cut = cut_into_edge(&mut a, &dart, base, 10.0, EdgeSide::Left).unwrap();
         assert!((a.pos(a.end(cut.shape[0])) - v(10., 6.)).length() < 1e-9);
         // Too close to the end.
-        assert!(cut_into_edge(&mut a, &dart, base, 1.0, true).is_err());
+        assert!(cut_into_edge(&mut a, &dart, base, 1.0, EdgeSide::Right).is_err());
     }
 
     #[test]
@@ -508,7 +528,7 @@ mod tests {
         let e = a.vertex(v(20., 0.));
         let base = a.edge(s, e, Curve::Quadratic(v(0.5, -0.2))).unwrap();
         let dart = dart_shape(&mut a, 3.0, DartSize::Side(5.0)).unwrap();
-        let cut = cut_into_edge(&mut a, &dart, base, 9.0, true).unwrap();
+        let cut = cut_into_edge(&mut a, &dart, base, 9.0, EdgeSide::Right).unwrap();
         let p = a.pos(a.start(cut.shape[0]));
         let q = a.pos(a.end(cut.shape[1]));
         assert!(((p - q).length() - 3.0).abs() < 1e-9);

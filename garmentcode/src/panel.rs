@@ -8,6 +8,7 @@
 use crate::arena::{Arena, EdgeId, InterfaceId, PanelId};
 use crate::error::Result;
 use crate::math::{Vec2, Vec3, trunc};
+use crate::ops::{Cut, EdgeSide};
 use crate::rotation::Rotation;
 use crate::seq::EdgeSeq;
 use crate::stitch::StitchRule;
@@ -340,16 +341,17 @@ impl PanelId {
         self
     }
 
-    /// Insert a dart shape into `edge` centred at arc length `offset`, and stitch its
-    /// two legs together. Returns the edges replacing `edge` and the leftover pieces
-    /// of the original edge. The panel loop is not modified (callers substitute).
-    pub fn add_dart(self, a: &mut Arena, shape: &EdgeSeq, edge: EdgeId, offset: f64, right: bool) -> Result<(EdgeSeq, EdgeSeq)> {
-        let cut = crate::ops::cut_into_edge(a, shape, edge, offset, right)?;
+    /// Insert a dart shape into `edge` centred at arc length `offset` on `side`, and
+    /// stitch its two legs together. Returns the cut: the edges replacing `edge`,
+    /// the dart's legs and the leftover pieces of the original edge. The panel loop
+    /// is not modified (callers substitute).
+    pub fn add_dart(self, a: &mut Arena, shape: &EdgeSeq, edge: EdgeId, offset: f64, side: EdgeSide) -> Result<Cut> {
+        let cut = crate::ops::cut_into_edge(a, shape, edge, offset, side)?;
         let l0 = a.interface(self, cut.shape[0]);
         let l1 = a.interface(self, cut.shape[1]);
         let rule = StitchRule::new(a, l0, l1)?;
         self.add_stitch(a, rule);
-        Ok((cut.edges, cut.leftovers))
+        Ok(cut)
     }
 
     /// Whether the outline crosses itself (the reference's check: arcs replaced by 11

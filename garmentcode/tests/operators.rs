@@ -4,7 +4,8 @@
 
 use garmentcode::curves::{match_tangents, quadratic_with_extremum};
 use garmentcode::ops::{
-    CornerCut, DartSize, cut_corner, cut_into_edge, cut_many_into_edge, dart_shape, distribute_horizontally, distribute_y, side_with_cut,
+    CornerCut, Cut, DartSize, EdgeSide, ShapeOrder, cut_corner, cut_into_edge, cut_many_into_edge, dart_shape, distribute_horizontally,
+    distribute_y, side_with_cut,
 };
 use garmentcode::pattern::{Severity, validate};
 use garmentcode::{
@@ -131,7 +132,7 @@ fn bodice_block_corner_and_edge_projection() {
     let neck = EdgeSeq::from_points(a, &[v2(0.0, 0.0), v2(9.0, 0.0)], false).unwrap();
     a.set_curve(neck[0], curve);
     let top_len = a.edge_length(top);
-    let cut = cut_into_edge(a, &neck, top, top_len - 4.5 - 4.0, false).unwrap();
+    let cut = cut_into_edge(a, &neck, top, top_len - 4.5 - 4.0, EdgeSide::Left).unwrap();
     let mut outline = front.edges(a).clone();
     outline.substitute(top, cut.edges.as_slice()).unwrap();
     front.set_edges(a, outline);
@@ -182,7 +183,7 @@ fn distributed_gores_with_darts_and_gathered_waist() {
         shapes.push(d);
     }
     let waist_len = a.edge_length(s[1]);
-    let cut = cut_many_into_edge(a, &shapes, s[1], waist_len / 2.0, true, false).unwrap();
+    let cut = cut_many_into_edge(a, &shapes, s[1], waist_len / 2.0, EdgeSide::Right, ShapeOrder::AsDrawn).unwrap();
     assert_eq!(cut.shape.len(), 4, "two darts of two legs");
     assert!(close(cut.leftovers.length(a) + 1.5 + 1.5, waist_len, 0.05), "{} vs {waist_len}", cut.leftovers.length(a));
     let mut outline = s.clone();
@@ -315,7 +316,7 @@ fn panel_dart_is_stitched() {
     let p = rect.panel;
     let dart = dart_shape(a, 3.0, DartSize::Side(10.0)).unwrap();
     let top = rect.top.edges(a)[0];
-    let (edges, leftovers) = p.add_dart(a, &dart, top, 10.0, false).unwrap();
+    let Cut { edges, leftovers, .. } = p.add_dart(a, &dart, top, 10.0, EdgeSide::Left).unwrap();
     assert_eq!(edges.len(), 4);
     assert!(close(leftovers.length(a), 27.0, 1e-9));
     assert!(close(a.edge_length(edges[1]), 10.0, 1e-9) && close(a.edge_length(edges[2]), 10.0, 1e-9));

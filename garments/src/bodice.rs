@@ -7,7 +7,7 @@ use crate::design::{self, CollarComponent};
 use crate::shared::{Fit, Resolved, Side};
 use crate::sleeves::Sleeve;
 use garmentcode::math::lerp;
-use garmentcode::ops::{DartSize, cut_corner, dart_shape};
+use garmentcode::ops::{Cut, DartSize, EdgeSide, cut_corner, dart_shape};
 use garmentcode::{Align, Arena, Body, Component, EdgeSeq, InterfaceId, PanelId, PartExt, Result, StitchRule, Vec2};
 
 /// How a torso panel reports its width at a level below the shoulder.
@@ -135,7 +135,8 @@ impl TorsoPanel {
         let side_d_width = max_len - side_len;
         let shape = dart_shape(a, side_d_width, DartSize::Side(side_d_depth))?;
         let side = edges[1];
-        let (s_edge, side_interface) = panel.add_dart(a, &shape, side, bust_line + side_d_width / 2.0, true)?;
+        let Cut { edges: s_edge, leftovers: side_interface, .. } =
+            panel.add_dart(a, &shape, side, bust_line + side_d_width / 2.0, EdgeSide::Right)?;
         edges.substitute_at(1, &s_edge);
         // Take some fabric from the top to match the shoulder width.
         let tip = a.end(s_edge.last_edge());
@@ -145,7 +146,8 @@ impl TorsoPanel {
         // Bottom dart.
         let shape = dart_shape(a, bottom_d_width, DartSize::Side(0.9 * bust_line))?;
         let bottom_edge = edges[0];
-        let (b_edge, b_interface) = panel.add_dart(a, &shape, bottom_edge, bust_point + bottom_d_width / 2.0, true)?;
+        let Cut { edges: b_edge, leftovers: b_interface, .. } =
+            panel.add_dart(a, &shape, bottom_edge, bust_point + bottom_d_width / 2.0, EdgeSide::Right)?;
         edges.substitute_at(0, &b_edge);
         let corner = a.end(b_edge.last_edge());
         let p = a.pos(corner);
@@ -201,10 +203,11 @@ impl TorsoPanel {
             let dist = bottom_d_position * 0.5;
             let shape = dart_shape(a, bottom_d_width, DartSize::Side(0.9 * bottom_d_depth))?;
             let offset = bottom_d_position + dist / 2.0 + bottom_d_width + bottom_d_width / 2.0;
-            let (mut b_edge, mut b_interface) = panel.add_dart(a, &shape, edges[0], offset, true)?;
+            let Cut { edges: mut b_edge, leftovers: mut b_interface, .. } = panel.add_dart(a, &shape, edges[0], offset, EdgeSide::Right)?;
             let shape = dart_shape(a, bottom_d_width, DartSize::Side(bottom_d_depth))?;
             let first = b_edge[0];
-            let (new_edges, leftovers) = panel.add_dart(a, &shape, first, bottom_d_position - dist / 2.0 + bottom_d_width / 2.0, true)?;
+            let Cut { edges: new_edges, leftovers, .. } =
+                panel.add_dart(a, &shape, first, bottom_d_position - dist / 2.0 + bottom_d_width / 2.0, EdgeSide::Right)?;
             b_edge.substitute(first, &new_edges)?;
             b_interface.substitute(first, &leftovers)?;
             let mut loop_edges = panel.edges(a).clone();

@@ -5,7 +5,7 @@ use crate::common::{eval_rise, v2, v3};
 use crate::design::FlareSkirt;
 use crate::shared::{BottomOptions, GatherTo, Symmetry};
 use garmentcode::arc;
-use garmentcode::ops::{DartSize, cut_into_edge, dart_shape};
+use garmentcode::ops::{DartSize, EdgeSide, cut_into_edge, dart_shape};
 use garmentcode::{Arena, Body, Component, Curve, EdgeSeq, InterfaceId, PanelId, Result, StitchRule};
 use std::f64::consts::PI;
 
@@ -259,9 +259,9 @@ fn add_cut(a: &mut Arena, panel: PanelId, bottom: InterfaceId, d: &FlareSkirt, s
     let t_len = a.edge_length(target);
     let offset = (d.cut.place * t_len).abs().max(width / 2.0).min(t_len - width / 2.0);
     // QUIRK: the side is decided from the current (post-orientation) edge direction.
-    let right = a.pos(a.start(target)).x > a.pos(a.end(target)).x;
+    let side = if a.pos(a.start(target)).x > a.pos(a.end(target)).x { EdgeSide::Right } else { EdgeSide::Left };
     let shape = dart_shape(a, width, DartSize::Depth(depth))?;
-    let cut = cut_into_edge(a, &shape, target, offset, right)?;
+    let cut = cut_into_edge(a, &shape, target, offset, side)?;
     let mut loop_edges = std::mem::take(panel.edges_mut(a));
     let res = loop_edges.substitute(target, &cut.edges);
     *panel.edges_mut(a) = loop_edges;

@@ -4,7 +4,7 @@
 use crate::bands::StraightBandPanel;
 use crate::circle_skirt::CircleArcPanel;
 use crate::common::{v2, v3};
-use crate::design::{self, CollarStyle, NeckShape};
+use crate::design::{self, CollarStyle};
 use crate::shapes::{self, NeckArgs};
 use crate::shared::{GatherTo, Resolved};
 use garmentcode::curves::match_tangents;
@@ -307,9 +307,4 @@ impl Collar {
             Collar::NoPanels(_) => None,
         }
     }
-}
-
-#[allow(dead_code)]
-fn _neck_shape_used(n: NeckShape) -> NeckShape {
-    n
 }

@@ -5,7 +5,7 @@ use crate::design::{self, GodetBase};
 use crate::shared::{BottomOptions, SkirtGroups};
 use crate::skirt_paneled::{PencilSkirt, Skirt2};
 use garmentcode::math::SignumOrZero;
-use garmentcode::ops::{cut_into_edge, distribute_horizontally};
+use garmentcode::ops::{EdgeSide, cut_into_edge, distribute_horizontally};
 use garmentcode::slots::{Bottom, Top};
 use garmentcode::{Arena, Body, Component, EdgeId, EdgeSeq, InterfaceId, PanelId, PartExt, Result, SlotExt, StitchRule};
 
@@ -126,7 +126,8 @@ impl GodetSkirt {
         let mut edge = bottom_edge;
         for i in 0..n {
             let offset = cut_width / 2.0 + if i == 0 { cuts_dist / 2.0 } else { cuts_dist };
-            let cut = cut_into_edge(a, &shape, edge, offset, right)?;
+            let side = if right { EdgeSide::Right } else { EdgeSide::Left };
+            let cut = cut_into_edge(a, &shape, edge, offset, side)?;
             let mut loop_edges = std::mem::take(panel.edges_mut(a));
             let res = loop_edges.substitute(edge, &cut.edges);
             *panel.edges_mut(a) = loop_edges;

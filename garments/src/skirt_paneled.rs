@@ -7,7 +7,7 @@ use crate::shapes;
 use crate::shared::{BottomOptions, Darts, GatherTo};
 use garmentcode::curves::quadratic_from_tangents;
 use garmentcode::math::close_enough;
-use garmentcode::ops::{DartSize, cut_into_edge, cut_many_into_edge, dart_shape, distribute_y, side_with_cut};
+use garmentcode::ops::{Cut, DartSize, EdgeSide, ShapeOrder, cut_into_edge, cut_many_into_edge, dart_shape, distribute_y, side_with_cut};
 use garmentcode::{
     Arena, Body, Component, Curve, EdgeId, EdgeSeq, Gather, InterfaceId, PanelId, Result, Rotation, StitchRule, Vec2, Vec3, VertexId,
 };
@@ -168,8 +168,8 @@ pub struct FittedPanelSpec<'s> {
     pub right_slit: f64,
     /// Decorative side cut shapes.
     pub side_cut: Option<&'s SideCutShape>,
-    /// Mirror the side cut.
-    pub flip_side_cut: bool,
+    /// The side cut as drawn or mirrored.
+    pub side_cut_order: ShapeOrder,
 }
 
 /// A decorative cut: one chain, or several chains drawn in one frame.
@@ -242,7 +242,7 @@ impl FittedSkirtPanel {
         if s.slit != 0.0 {
             let shape = dart_shape(a, 2.0, DartSize::Depth(s.slit * s.length))?;
             let len = a.edge_length(hem);
-            let cut = cut_into_edge(a, &shape, hem, len / 2.0, true)?;
+            let cut = cut_into_edge(a, &shape, hem, len / 2.0, EdgeSide::Right)?;
             edges.substitute(hem, &cut.edges)?;
             bottom = cut.leftovers;
         }
@@ -265,8 +265,8 @@ impl FittedSkirtPanel {
             // QUIRK: any failure to fit the decorative cut silently skips it.
             let len = a.edge_length(left_bottom);
             let cut = match shape {
-                SideCutShape::Single(seq) => cut_into_edge(a, seq, left_bottom, len / 2.0, true),
-                SideCutShape::Many(seqs) => cut_many_into_edge(a, seqs, left_bottom, len / 2.0, true, s.flip_side_cut),
+                SideCutShape::Single(seq) => cut_into_edge(a, seq, left_bottom, len / 2.0, EdgeSide::Right),
+                SideCutShape::Many(seqs) => cut_many_into_edge(a, seqs, left_bottom, len / 2.0, EdgeSide::Right, s.side_cut_order),
             };
             if let Ok(cut) = cut {
                 edges.substitute(left_bottom, &cut.edges)?;
@@ -365,7 +365,7 @@ pub(crate) fn add_darts(
         let last = top_edges.last_edge();
         let left_len = a.edge_length(last);
         let offset = if from_middle { (left_len - top_len / 2.0) + off } else { left_len + off };
-        let (new_edges, leftovers) = panel.add_dart(a, dart, last, offset, true)?;
+        let Cut { edges: new_edges, leftovers, .. } = panel.add_dart(a, dart, last, offset, EdgeSide::Right)?;
         top_edges.substitute(last, &new_edges)?;
         int_edges.substitute(last, &leftovers)?;
     }
@@ -456,7 +456,7 @@ impl PencilSkirt {
                 left_slit: pick(d.left_slit),
                 right_slit: pick(d.right_slit),
                 side_cut: shape_l.as_ref(),
-                flip_side_cut: false,
+                side_cut_order: ShapeOrder::AsDrawn,
             },
         )?;
         front.panel.translate_to(a, v3(0.0, waist_level, 25.0));
@@ -479,7 +479,7 @@ impl PencilSkirt {
                 left_slit: pick(d.left_slit),
                 right_slit: pick(d.right_slit),
                 side_cut: shape_r.as_ref(),
-                flip_side_cut: false,
+                side_cut_order: ShapeOrder::AsDrawn,
             },
         )?;
         back.panel.translate_to(a, v3(0.0, waist_level, -20.0));
