@@ -10,8 +10,8 @@ mod json;
 mod order;
 mod validate;
 
-pub use json::python_float_repr;
 pub(crate) use json::write_python_float;
+pub use json::{MAX_CONTROL, MAX_EDGES_PER_PANEL, MAX_EXTENT_CM, MAX_PANELS, python_float_repr};
 pub use order::panel_order;
 pub use validate::{Problem, ProblemKind, Severity, validate};
 
