@@ -113,7 +113,7 @@ fn bad_bodies_and_missing_files_are_refused_clearly() {
     std::fs::write(dir.join("neg.yaml"), "body:\n  height: -3\n").unwrap();
     let o = run(&["build", "--body", "neg.yaml", "--out", "out"], &dir);
     assert_eq!(code(&o), 2);
-    assert!(stderr(&o).contains("body.height") && stderr(&o).contains("positive"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("body.height") && stderr(&o).contains("plausible range"), "{}", stderr(&o));
     let o = run(&["build", "--body", "nobody", "--out", "out"], &dir);
     assert_eq!(code(&o), 2);
     assert!(stderr(&o).contains("mean_all"), "lists the built-in bodies: {}", stderr(&o));

@@ -52,10 +52,17 @@ pub struct BodyError {
     pub problems: Vec<String>,
 }
 
+/// Problems a [`BodyError`] shows; the rest are counted.
+const MAX_SHOWN: usize = 20;
+
 impl fmt::Display for BodyError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}: ", self.file)?;
-        f.write_str(&self.problems.join("; "))
+        f.write_str(&self.problems.iter().take(MAX_SHOWN).cloned().collect::<Vec<_>>().join("; "))?;
+        if self.problems.len() > MAX_SHOWN {
+            write!(f, "; ... and {} more", self.problems.len() - MAX_SHOWN)?;
+        }
+        Ok(())
     }
 }
 

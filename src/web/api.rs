@@ -30,6 +30,8 @@ use super::zip;
 
 /// Longest accepted pattern name.
 const MAX_NAME: usize = 64;
+/// Problems an error lists; the rest are counted in a last line.
+const MAX_PROBLEMS: usize = 20;
 
 /// A request the API refuses: the HTTP status, a message, and for designs and
 /// bodies with several problems one line per problem.
@@ -53,8 +55,13 @@ impl ApiError {
         ApiError::new(400, message)
     }
 
-    fn from_problems(problems: Vec<String>) -> ApiError {
-        let message = match problems.len() {
+    fn from_problems(mut problems: Vec<String>) -> ApiError {
+        let n = problems.len();
+        if n > MAX_PROBLEMS {
+            problems.truncate(MAX_PROBLEMS);
+            problems.push(format!("... and {} more", n - MAX_PROBLEMS));
+        }
+        let message = match n {
             1 => problems[0].clone(),
             n => format!("{n} problems: {}", problems.join("; ")),
         };
@@ -365,6 +372,11 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
                 }
                 Some(other) => problems
                     .push(format!("body.measurements must be an object of measurement names and numbers, not a JSON {}", json_type(other))),
+            }
+            if problems.is_empty() {
+                if let Err(p) = b.check_derived() {
+                    problems.extend(p.into_iter().map(|p| format!("body: {p}")));
+                }
             }
             if problems.is_empty() {
                 let label = if map.contains_key("measurements") { label } else { base.to_string() };

@@ -22,14 +22,20 @@ impl DesignError {
     }
 }
 
+/// Problems a [`DesignError`] shows; the rest are counted.
+pub const MAX_SHOWN: usize = 20;
+
 impl fmt::Display for DesignError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.problems.len() == 1 {
             return write!(f, "{}: {}", self.file, self.problems[0]);
         }
         write!(f, "{}: {} problems", self.file, self.problems.len())?;
-        for p in &self.problems {
+        for p in self.problems.iter().take(MAX_SHOWN) {
             write!(f, "\n  {p}")?;
+        }
+        if self.problems.len() > MAX_SHOWN {
+            write!(f, "\n  ... and {} more", self.problems.len() - MAX_SHOWN)?;
         }
         Ok(())
     }
@@ -82,7 +88,12 @@ fn walk(node: &Node, prefix: &str, space: &DesignSpace, values: &mut [(String, V
             (Some(_), None) => problems.push(format!("{}: design.{path}: a parameter needs a `v:` value", at(v))),
             (None, _) if space.is_group(&path) => walk(v, &path, space, values, problems),
             (None, _) => {
-                let hint = suggestion(&path, space).map(|s| format!(" (did you mean design.{s}?)")).unwrap_or_default();
+                // Suggestions only for the problems shown (they cost a pass over the space).
+                let hint = (problems.len() < MAX_SHOWN)
+                    .then(|| suggestion(&path, space))
+                    .flatten()
+                    .map(|s| format!(" (did you mean design.{s}?)"))
+                    .unwrap_or_default();
                 problems.push(format!("{}: design.{path}: unknown parameter{hint}", at(k)));
             }
         }

@@ -185,7 +185,7 @@ fn bodies_by_name_file_or_measurements() {
     let (status, r) = post("/api/body", json!({ "body": { "measurements": { "waist": -3, "wings": 2, "height": "tall" } } }));
     assert_eq!(status, 400);
     let e = r["error"].as_str().unwrap();
-    assert!(e.contains("body.waist") && e.contains("positive") && e.contains("body.wings") && e.contains("body.height"), "{e}");
+    assert!(e.contains("body.waist") && e.contains("plausible range") && e.contains("body.wings") && e.contains("body.height"), "{e}");
     let (status, r) = post("/api/body", json!({ "body": { "yaml": "body:\n  waist: 3\n" } }));
     assert_eq!(status, 400);
     assert!(r["error"].as_str().unwrap().contains("missing measurement"), "{r}");
