@@ -477,26 +477,21 @@ pub fn schema() -> Json {
             json!({ "name": n, "description": description })
         })
         .collect();
-    let measurements: Vec<Json> = Body::measurement_names()
-        .map(|n| {
+    let measurements: Vec<Json> = garmentcode::body::MEASUREMENTS
+        .iter()
+        .map(|m| {
             json!({
-                "name": n,
-                "unit": if Body::is_angle(n) { "deg" } else { "cm" },
-                "optional": n == "vert_bust_line",
-                "description": Body::describe_measurement(n).unwrap_or(""),
+                "name": m.name,
+                "unit": m.unit,
+                "optional": m.optional,
+                "description": m.description,
+                "min": m.min,
+                "max": m.max,
             })
         })
         .collect();
-    let neutral = builtin_bodies().first().map(|(_, b)| b.clone());
-    let derived: Vec<Json> = neutral
-        .map(|b| {
-            b.entries()
-                .into_iter()
-                .filter(|(n, _)| n.starts_with('_'))
-                .map(|(n, _)| json!({ "name": n, "description": Body::describe_measurement(n).unwrap_or("") }))
-                .collect()
-        })
-        .unwrap_or_default();
+    let derived: Vec<Json> =
+        garmentcode::body::DERIVED_VALUES.iter().map(|d| json!({ "name": d.name, "description": d.description })).collect();
     json!({
         "groups": groups,
         "params": params,
