@@ -14,7 +14,22 @@ pub fn run(args: ServeArgs) -> Result<i32, CliError> {
     if !server::is_loopback(&addr) {
         eprintln!("warning: listening on {addr}: the configurator is reachable from other machines");
     }
-    outln!("Serving the garment configurator at {} (Ctrl-C to stop)", server::url(&addr));
-    server::serve(listener, Limits::default(), |line| eprintln!("{line}"));
+    if addr.ip().is_unspecified() {
+        outln!(
+            "Serving the garment configurator at {} (and at this machine's addresses, port {}; Ctrl-C to stop)",
+            server::url(&addr),
+            addr.port()
+        );
+    } else {
+        outln!("Serving the garment configurator at {} (Ctrl-C to stop)", server::url(&addr));
+    }
+    server::serve(listener, Limits::default(), log).map_err(|e| CliError::Failed(format!("the server stopped: {e}")))?;
+    eprintln!("stopped");
     Ok(0)
+}
+
+/// A log line on stderr; a closed stderr is ignored (never a panic).
+fn log(line: &str) {
+    use std::io::Write;
+    let _ = writeln!(std::io::stderr(), "{line}");
 }

@@ -46,12 +46,14 @@ pub struct ApiError {
 }
 
 impl ApiError {
-    fn new(status: u16, message: impl Into<String>) -> ApiError {
+    /// An error with this status and message.
+    pub fn new(status: u16, message: impl Into<String>) -> ApiError {
         let message = message.into();
         ApiError { status, problems: vec![message.clone()], message }
     }
 
-    fn bad(message: impl Into<String>) -> ApiError {
+    /// A 400 Bad Request with this message.
+    pub fn bad(message: impl Into<String>) -> ApiError {
         ApiError::new(400, message)
     }
 
@@ -176,11 +178,14 @@ fn route_inner(req: &Request) -> Response {
 
 /// The request body as a JSON object (an empty body is `{}`).
 fn parse_json(req: &Request) -> ApiResult<Json> {
-    if let Some(ct) = req.header("content-type") {
-        let mime = ct.split(';').next().unwrap_or("").trim().to_ascii_lowercase();
-        if mime != "application/json" && mime != "text/plain" {
-            return Err(ApiError::new(415, format!("the body must be JSON (Content-Type: application/json), not {mime}")));
-        }
+    // Only `application/json`: a web page can send `text/plain` or a form to any
+    // address without asking, but not JSON.
+    let mime = req.header("content-type").map(|ct| ct.split(';').next().unwrap_or("").trim().to_ascii_lowercase());
+    if mime.as_deref() != Some("application/json") {
+        return Err(ApiError::new(
+            415,
+            format!("the body must be JSON sent with Content-Type: application/json (got {})", mime.as_deref().unwrap_or("none")),
+        ));
     }
     if req.body.iter().all(u8::is_ascii_whitespace) {
         return Ok(Json::Object(Map::new()));
