@@ -179,3 +179,39 @@ fn overlapping_curves_stop_the_intersection_search() {
     let r = within(FAST, "intersect", || intersect(&Seg::Cubic(c), &Seg::Cubic(back)));
     assert_eq!(r, Err(IntersectError::TooManyPairs));
 }
+
+#[test]
+fn the_absurd_specification_reproducers_are_refused_by_check_and_render() {
+    let dir = scratch("absurd_specs");
+    for (file, expect) in [
+        ("spec-vertex-1e308.json", "beyond"),
+        ("spec-huge-control-points.json", "control point"),
+        ("spec-units-1e-300.json", "units_in_meter"),
+    ] {
+        let path = data(file);
+        for args in [vec!["check", path.to_str().unwrap()], vec!["render", path.to_str().unwrap(), "-o", "r"]] {
+            let o = within(FAST, file, || cli(&args, &dir));
+            let err = String::from_utf8_lossy(&o.stderr);
+            assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+            assert!(err.contains(expect), "{args:?}: {err}");
+        }
+    }
+}
+
+#[test]
+fn a_design_with_270_000_keys_reads_in_linear_time_with_a_short_error() {
+    use garmentcode::Params;
+    let mut text = String::from("design:\n");
+    for i in 0..270_000 {
+        text.push_str(&format!("  k{i}: 1\n"));
+    }
+    let space = garments::Design::design_space();
+    let e = within(FAST, "read_design", || garmentcode::params::read_design::<garments::Design>(&text, "many.yaml", &space)).unwrap_err();
+    let shown = e.to_string();
+    assert!(shown.len() < 10_000, "{} bytes of error", shown.len());
+    assert!(shown.contains("270000 problems") && shown.contains("... and 269980 more"), "{}", &shown[..300.min(shown.len())]);
+    // Duplicate keys are still found among many.
+    let dup = format!("{text}  k5: 2\n");
+    let e = garmentcode::params::read_design::<garments::Design>(&dup, "dup.yaml", &space).unwrap_err().to_string();
+    assert!(e.contains("duplicate mapping key"), "{}", &e[..200.min(e.len())]);
+}
