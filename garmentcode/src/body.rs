@@ -1,7 +1,7 @@
 //! Body measurements, read from the reference's body YAML files, and the derived
 //! values the garment programs use.
 //!
-//! Every measurement is declared once, in the table at the [`measurements!`]
+//! Every measurement is declared once, in the table [`MEASUREMENTS`] (written with the `measurements!` macro)
 //! invocation below: its name, unit, description and plausible range. The
 //! [`Body`] struct, reading and writing body files, the per-measurement checks,
 //! and the listings tools show (the web configurator's schema, the docs) all come
