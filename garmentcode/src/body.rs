@@ -1,11 +1,12 @@
 //! Body measurements, read from the reference's body YAML files, and the derived
 //! values the garment programs use.
 //!
-//! Every measurement is declared once, in the table [`MEASUREMENTS`] (written with the `measurements!` macro)
-//! invocation below: its name, unit, description and plausible range. The
-//! [`Body`] struct, reading and writing body files, the per-measurement checks,
-//! and the listings tools show (the web configurator's schema, the docs) all come
-//! from that table; the derived values likewise come from one table.
+//! Every measurement is declared once, in the table [`MEASUREMENTS`] (written
+//! with the `measurements!` macro below): its name, unit, description and
+//! plausible range. The [`Body`] struct, reading and writing body files, the
+//! per-measurement checks, and the listings tools show (the web configurator's
+//! schema, the docs) all come from that table; the derived values likewise come
+//! from one table ([`DERIVED_VALUES`]).
 //!
 //! Garments are retargeted to a new body by changing measurements alone, so the
 //! measurements are checked on load: every one must be present, finite and within
