@@ -11,13 +11,36 @@
 //! `garments/data/bodies/mean_all.yaml`, `out/paper_skirt`. Writes
 //! `DIR/specification.json`, `DIR/pattern.svg` and `DIR/design_params.yaml` (the
 //! design in the reference's format, every parameter with its range).
+//!
+//! # The figure and this file, step by step
+//!
+//! The paper writes the skirt in Python with pygarment (left, paraphrased); this
+//! file writes the same program in Rust (right). Interfaces are typed fields, not
+//! dictionary keys, so a misspelt interface is a compile error, and a copy made by
+//! an operator is the same panel class with its own interfaces.
+//!
+//! | step | pygarment (the paper's figure) | garmentcode (this file) |
+//! | --- | --- | --- |
+//! | a panel class | `class ThinSkirtPanel(pyg.Panel)` | `#[component] struct ThinSkirtPanel { #[panel] panel, .. }` |
+//! | its outline | `self.edges = EdgeSeqFactory.from_verts(..., loop=True)` | `EdgeSeq::from_points(a, &corners, true)` |
+//! | its interfaces | `self.interfaces = {'right': Interface(self, self.edges[0]), ...}` | `#[interface] right` ... `right: a.interface(panel, edges[0])` |
+//! | a component | `class FlareSkirt(pyg.Component)` | `#[component] struct FlareSkirt { #[part] panels, .. }` |
+//! | placement | `base.translate_by(...)`, `base.rotate_by(...)` | `base.translate_to(a, ..)`, `base.rotate_by(a, ..)` |
+//! | copies around the body | `self.subs = pyg.ops.distribute_Y(base, n)` | `let panels = distribute_y(a, base, n, "skirt")` (a `Vec<ThinSkirtPanel>`) |
+//! | seams | `stitching_rules.append((subs[i].interfaces['left'], subs[i+1].interfaces['right']))` | `StitchRule::new(a, panels[i].left, panels[(i + 1) % n].right)?` |
+//! | the waist | `self.interfaces = {'top': Interface.from_multiple(*[s.interfaces['top'] ...])}` | `#[interface] top` = `a.interface_from(&tops)` |
+//! | the pattern | `skirt.assembly()` | `skirt.assemble(&mut a, "paper_skirt")?` |
+//!
+//! A function that needs "something with a waist" asks for `B: Slot<Top>`
+//! (`waistline` below): plugging in a component without a `top` interface does
+//! not compile.
 
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 
 use garmentcode::draw::{DrawOptions, to_svg};
+use garmentcode::io::{read_design, write_design};
 use garmentcode::ops::distribute_y;
-use garmentcode::params::{read_design, write_design};
 use garmentcode::slots::Top;
 use garmentcode::{
     Arena, Body, EdgeSeq, InterfaceId, PanelId, Params, PartExt, Rotation, Slot, SlotExt, StitchRule, Vec2, Vec3, component,
@@ -65,20 +88,12 @@ impl ThinSkirtPanel {
         let edges = EdgeSeq::from_points(a, &corners, true)?;
         let panel = a.panel_with_edges(name, edges.clone());
         panel.top_center_pivot(a);
-        let right = a.interface(panel, edges[0]);
-        let top = a.interface(panel, edges[1]);
-        let left = a.interface(panel, edges[2]);
-        // Registered with the panel too, so that copies of it carry their own.
-        for (name, i) in [("right", right), ("top", top), ("left", left)] {
-            panel.add_interface(a, name, i);
-        }
-        Ok(ThinSkirtPanel { panel, right, top, left })
-    }
-
-    /// The panel class of a copy made by an operator (its interfaces by name).
-    pub fn of(a: &Arena, panel: PanelId) -> Self {
-        let named = |name: &str| panel.interface(a, name).expect("thin skirt panels register their interfaces");
-        ThinSkirtPanel { panel, right: named("right"), top: named("top"), left: named("left") }
+        Ok(ThinSkirtPanel {
+            panel,
+            right: a.interface(panel, edges[0]),
+            top: a.interface(panel, edges[1]),
+            left: a.interface(panel, edges[2]),
+        })
     }
 }
 
@@ -106,21 +121,20 @@ impl FlareSkirt {
         let hem_for_hips = top_width + (body.hips - body.waist) / n as f64 * length / body.hips_line;
         let bottom_width = hem_for_suns.max(hem_for_hips);
 
-        let first = ThinSkirtPanel::new(a, "skirt", top_width, bottom_width, length)?;
+        let base = ThinSkirtPanel::new(a, "skirt", top_width, bottom_width, length)?;
         // Face the first panel outwards on the wearer's right, far enough from the
         // body axis that the n panels' top edges close into a regular polygon.
         let radius = top_width / (2.0 * (PI / n as f64).tan());
-        first.panel.translate_to(a, Vec3::new(-radius, body.derived().waist_level, 0.0));
-        first.panel.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, -90.0, 0.0]));
-        let ids = distribute_y(a, first.panel, n, "skirt");
+        base.translate_to(a, Vec3::new(-radius, body.derived().waist_level, 0.0));
+        base.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, -90.0, 0.0]));
+        // n panels around the body: each copy is a ThinSkirtPanel with its own interfaces.
+        let panels = distribute_y(a, base, n, "skirt");
 
-        let panels: Vec<ThinSkirtPanel> = ids.iter().map(|&p| ThinSkirtPanel::of(a, p)).collect();
         let mut seams = Vec::with_capacity(n);
         for i in 0..n {
-            let next = &panels[(i + 1) % n];
-            seams.push(StitchRule::new(a, panels[i].left, next.right)?);
+            seams.push(StitchRule::new(a, panels[i].left, panels[(i + 1) % n].right)?);
         }
-        let tops: Vec<InterfaceId> = panels.iter().map(|p| p.iface::<Top>()).collect();
+        let tops: Vec<InterfaceId> = panels.iter().map(|p| p.top).collect();
         let top = a.interface_from(&tops);
         Ok(FlareSkirt { panels, top, seams })
     }

@@ -365,7 +365,7 @@ fn a_user_designs_a_garment_in_the_browser() {
     b.click(&b.find("#download-spec"));
     let spec = downloaded(&downloads, "specification.json");
     let design =
-        garmentcode::params::read_design(UPLOADED_DESIGN, "upload", &<garments::Design as garmentcode::Params>::design_space()).unwrap();
+        garmentcode::io::read_design(UPLOADED_DESIGN, "upload", &<garments::Design as garmentcode::Params>::design_space()).unwrap();
     let body = garments::builtin::body("mean_all").unwrap();
     let expected = garments::build::build(&design, &body, "upload_design").unwrap().pattern.to_json().unwrap();
     assert_eq!(String::from_utf8(spec.clone()).unwrap(), expected, "the downloaded specification is the library's");

@@ -10,8 +10,7 @@ mod skirt_runtime;
 #[path = "../examples/paper_skirt.rs"]
 mod paper_skirt;
 
-use garmentcode::pattern::{Severity, validate};
-use garmentcode::{Arena, PartExt};
+use garmentcode::{Arena, PartExt, Severity, validate};
 
 #[test]
 fn runtime_skirt_builds_and_fits() {
@@ -42,7 +41,7 @@ fn runtime_skirt_builds_and_fits() {
 
 #[test]
 fn paper_skirt_builds_from_its_design_file() {
-    use garmentcode::params::{read_design, write_design};
+    use garmentcode::io::{read_design, write_design};
     use garmentcode::{Body, Interfaces, Params};
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     let space = paper_skirt::Design::design_space();
@@ -56,8 +55,12 @@ fn paper_skirt_builds_from_its_design_file() {
 
     let mut a = Arena::new();
     let skirt = paper_skirt::FlareSkirt::new(&mut a, &body, &design.skirt).unwrap();
-    assert_eq!(skirt.interface_names(), ["top"]);
-    assert_eq!(skirt.interface("top"), Some(skirt.top));
+    assert_eq!(skirt.interfaces(), [("top", skirt.top)]);
+    // Every panel is a ThinSkirtPanel with interfaces of its own panel.
+    for p in &skirt.panels {
+        assert_eq!(p.interfaces().iter().map(|(n, _)| *n).collect::<Vec<_>>(), ["right", "top", "left"]);
+        assert!(p.interfaces().iter().all(|(_, i)| i.panels(&a) == [p.panel]));
+    }
     assert!((skirt.top.length(&a) - body.waist).abs() < 1e-9, "the waistline is the body's waist");
     let pattern = skirt.assemble(&mut a, "paper_skirt").unwrap();
     let names: Vec<&str> = pattern.panels.iter().map(|p| p.name.as_str()).collect();

@@ -185,7 +185,7 @@ fn spec_seeds() -> Vec<Vec<u8>> {
 
 fn design_of(text: &str) -> Option<garments::Design> {
     use garmentcode::Params;
-    garmentcode::params::read_design(text, "fuzz.yaml", &garments::Design::design_space()).ok()
+    garmentcode::io::read_design(text, "fuzz.yaml", &garments::Design::design_space()).ok()
 }
 
 /// What the tool does with each kind of input.
@@ -210,7 +210,7 @@ fn run_body(input: &[u8]) -> bool {
 fn run_spec(input: &[u8]) -> bool {
     let text = String::from_utf8_lossy(input);
     let Ok(p) = Pattern::from_json(&text) else { return false };
-    let _ = garmentcode::pattern::validate(&p);
+    let _ = garmentcode::validate(&p);
     let _ = p.to_json();
     let _ = garmentcode::draw::to_svg(&p, &Default::default());
     true

@@ -19,7 +19,7 @@ fn bodies(name: &str) -> String {
 fn design(name: &str) -> garments::Design {
     use garmentcode::Params;
     let text = std::fs::read_to_string(data(name)).unwrap();
-    garmentcode::params::read_design(&text, name, &garments::Design::design_space()).unwrap()
+    garmentcode::io::read_design(&text, name, &garments::Design::design_space()).unwrap()
 }
 
 /// A body file with one measurement replaced.
@@ -114,7 +114,7 @@ fn a_dart_narrower_than_the_tolerance_is_an_error_not_a_panic() {
 
 #[test]
 fn every_measurement_far_out_of_range_is_refused_naming_it() {
-    for m in garmentcode::body::MEASUREMENTS {
+    for m in garmentcode::MEASUREMENTS {
         for v in ["0.000001", "1000000.0", "-1.0"] {
             if m.unit == "deg" && v == "0.000001" {
                 continue; // a tiny angle is a plausible angle
@@ -172,7 +172,7 @@ fn absurd_numbers_in_a_specification_are_refused() {
 
 #[test]
 fn overlapping_curves_stop_the_intersection_search() {
-    use garmentcode::intersect::{IntersectError, Seg, intersect};
+    use garmentcode::parity::svgpath::{IntersectError, Seg, try_intersect as intersect};
     let c = [[0.0, 0.0], [30.0, 40.0], [70.0, -40.0], [100.0, 0.0]];
     // The same curve traversed backwards: equal everywhere, unequal as segments.
     let back = [c[3], c[2], c[1], c[0]];
@@ -206,12 +206,12 @@ fn a_design_with_270_000_keys_reads_in_linear_time_with_a_short_error() {
         text.push_str(&format!("  k{i}: 1\n"));
     }
     let space = garments::Design::design_space();
-    let e = within(FAST, "read_design", || garmentcode::params::read_design::<garments::Design>(&text, "many.yaml", &space)).unwrap_err();
+    let e = within(FAST, "read_design", || garmentcode::io::read_design::<garments::Design>(&text, "many.yaml", &space)).unwrap_err();
     let shown = e.to_string();
     assert!(shown.len() < 10_000, "{} bytes of error", shown.len());
     assert!(shown.contains("270000 problems") && shown.contains("... and 269980 more"), "{}", &shown[..300.min(shown.len())]);
     // Duplicate keys are still found among many.
     let dup = format!("{text}  k5: 2\n");
-    let e = garmentcode::params::read_design::<garments::Design>(&dup, "dup.yaml", &space).unwrap_err().to_string();
+    let e = garmentcode::io::read_design::<garments::Design>(&dup, "dup.yaml", &space).unwrap_err().to_string();
     assert!(e.contains("duplicate mapping key"), "{}", &e[..200.min(e.len())]);
 }

@@ -141,6 +141,20 @@ mod expansion {
     }
 
     #[test]
+    fn component_enum() {
+        insta::assert_snapshot!(pretty(
+            expand::component::derive,
+            r#"
+            #[component(slots(Top))]
+            enum Bottom {
+                Circle(SkirtCircle),
+                Pants(Pants),
+            }
+            "#
+        ));
+    }
+
+    #[test]
     fn error_comes_with_a_stub_impl() {
         insta::assert_snapshot!(pretty(
             expand::params::derive,

@@ -11,9 +11,9 @@
 
 use crate::edge::{Curve, Edge};
 use crate::error::{Error, Result};
-use crate::interface::InterfaceData;
-use crate::math::{Vec2, close_enough};
-use crate::panel::PanelData;
+use crate::math::{Vec2, Vec3, close_enough};
+use crate::rotation::Rotation;
+use std::ops::{Deref, DerefMut};
 
 /// Identity of a vertex.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -41,6 +41,94 @@ pub(crate) struct EdgeData {
     pub label: u32,
     /// Index of the edge in its panel's written loop, set on assembly.
     pub geometric_id: u32,
+}
+
+/// An ordered list of edges.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct EdgeSeq(pub Vec<EdgeId>);
+
+impl Deref for EdgeSeq {
+    type Target = Vec<EdgeId>;
+    fn deref(&self) -> &Vec<EdgeId> {
+        &self.0
+    }
+}
+
+impl DerefMut for EdgeSeq {
+    fn deref_mut(&mut self) -> &mut Vec<EdgeId> {
+        &mut self.0
+    }
+}
+
+impl From<Vec<EdgeId>> for EdgeSeq {
+    fn from(v: Vec<EdgeId>) -> Self {
+        EdgeSeq(v)
+    }
+}
+
+impl From<EdgeId> for EdgeSeq {
+    fn from(e: EdgeId) -> Self {
+        EdgeSeq(vec![e])
+    }
+}
+
+impl<'a> IntoIterator for &'a EdgeSeq {
+    type Item = &'a EdgeId;
+    type IntoIter = std::slice::Iter<'a, EdgeId>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.0.iter()
+    }
+}
+
+/// A stitch between two interfaces, matched edge for edge.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StitchRule {
+    /// First side.
+    pub a: InterfaceId,
+    /// Second side.
+    pub b: InterfaceId,
+}
+
+/// A run of consecutive interface edges `[start, end)` gathered by `coeff`: the
+/// fabric of these edges is `coeff` times longer than the seam it is sewn to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ruffle {
+    /// Gather factor (1 = flat).
+    pub coeff: f64,
+    /// First edge of the section.
+    pub start: usize,
+    /// One past the last edge of the section.
+    pub end: usize,
+}
+
+/// Stored interface.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct InterfaceData {
+    pub edges: EdgeSeq,
+    pub panels: Vec<PanelId>,
+    pub right_wrong: Vec<bool>,
+    /// "Treat this edge as reversed" flags used by stitch matching.
+    pub flipping: Vec<bool>,
+    pub ruffle: Vec<Ruffle>,
+}
+
+/// Stored panel.
+#[derive(Clone, Debug)]
+pub(crate) struct PanelData {
+    pub name: String,
+    pub label: String,
+    pub translation: Vec3,
+    pub rotation: Rotation,
+    pub edges: EdgeSeq,
+    /// The interfaces made over this panel's edges, in creation order (every
+    /// [`Arena::interface`] over the panel adds one; a corner cut updates all of
+    /// them and adds the one over the inserted shape).
+    pub interfaces: Vec<InterfaceId>,
+    /// Stitches inside the panel (darts).
+    pub stitches: Vec<StitchRule>,
+    /// When set, the panel's "length" is this interface's length instead of its
+    /// bounding-box height.
+    pub length_interface: Option<InterfaceId>,
 }
 
 /// Storage of one garment's geometry.
@@ -345,8 +433,8 @@ pub(crate) fn check_distinct(a: Vec2, b: Vec2) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::arena::EdgeSeq;
     use crate::edge::Curve;
-    use crate::seq::EdgeSeq;
 
     #[test]
     fn a_linearisation_piece_with_coinciding_ends_is_refused_as_the_reference_does() {

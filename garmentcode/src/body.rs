@@ -15,7 +15,7 @@
 //! outside its range is an error that names the range and the likely cause, such
 //! as a length typed in metres.
 
-use crate::yaml::{self, Node, Value as Y};
+use crate::parity::yaml::{self, Node, Value as Y};
 use std::fmt;
 
 /// One raw body measurement as declared in the body table.

@@ -5,22 +5,10 @@
 //! stitch that splits edges updates the interface it was given, and every component
 //! holding that interface sees the split, as in the reference.
 
-use crate::arena::{Arena, EdgeId, InterfaceId, PanelId};
+use crate::arena::EdgeSeq;
+use crate::arena::{Arena, EdgeId, InterfaceData, InterfaceId, PanelId, Ruffle};
 use crate::error::{Error, Result};
 use crate::math::{Vec3, close_enough};
-use crate::seq::EdgeSeq;
-
-/// A run of consecutive interface edges `[start, end)` gathered by `coeff`: the
-/// fabric of these edges is `coeff` times longer than the seam it is sewn to.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ruffle {
-    /// Gather factor (1 = flat).
-    pub coeff: f64,
-    /// First edge of the section.
-    pub start: usize,
-    /// One past the last edge of the section.
-    pub end: usize,
-}
 
 /// Gather factors of a new interface: one for all edges, or one per edge (runs of
 /// equal values become sections).
@@ -36,17 +24,6 @@ impl From<f64> for Gather {
     fn from(v: f64) -> Self {
         Gather::Uniform(v)
     }
-}
-
-/// Stored interface.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct InterfaceData {
-    pub edges: EdgeSeq,
-    pub panels: Vec<PanelId>,
-    pub right_wrong: Vec<bool>,
-    /// "Treat this edge as reversed" flags used by stitch matching.
-    pub flipping: Vec<bool>,
-    pub ruffle: Vec<Ruffle>,
 }
 
 impl Arena {
@@ -70,7 +47,9 @@ impl Arena {
         d
     }
 
-    /// A new interface over `edges` of `panel`, flat (no gathers).
+    /// A new interface over `edges` of `panel`, flat (no gathers). The panel keeps a
+    /// list of the interfaces made over it ([`PanelId::interfaces`]): a corner cut
+    /// updates them and a copy of the panel copies them.
     pub fn interface(&mut self, panel: PanelId, edges: impl Into<EdgeSeq>) -> InterfaceId {
         self.interface_gathered(panel, edges, Gather::Uniform(1.0)).expect("uniform gathers always fit")
     }
@@ -103,7 +82,10 @@ impl Arena {
         d.right_wrong.resize(n, false);
         d.flipping.resize(n, false);
         self.interfaces.push(d);
-        Ok(InterfaceId((self.interfaces.len() - 1) as u32))
+        let id = InterfaceId((self.interfaces.len() - 1) as u32);
+        // The panel knows its interfaces: a corner cut updates them, a copy copies them.
+        self.pd_mut(panel).interfaces.push(id);
+        Ok(id)
     }
 
     /// A new interface concatenating others (their edges, panels, flags and gather

@@ -2,13 +2,16 @@
 //! projecting a shape into an edge or onto a corner, distributing copies, and the
 //! sleeve-opening balancing.
 
+use crate::arena::EdgeSeq;
 use crate::arena::{Arena, EdgeId, InterfaceId, PanelId, VertexId};
+use crate::component::{PanelPart, PartExt};
 use crate::edge::{Curve, Segment};
 use crate::error::{Error, Result};
 use crate::intersect;
 use crate::math::{SignumOrZero, Vec2, Vec3, close_enough, cross, norm, vector_angle};
+use crate::parity::svgpath::{Num, Seg, try_intersect_as};
+use crate::remap::Remap;
 use crate::rotation::Rotation;
-use crate::seq::EdgeSeq;
 
 /// Size of a triangular dart besides its width.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -50,7 +53,25 @@ pub fn side_with_cut(a: &mut Arena, start: VertexId, end: VertexId, start_cut: f
     EdgeSeq::polyline(a, &verts, false)
 }
 
-/// Result of [`cut_into_edge`].
+/// Which side of an edge, looking along its direction, a shape is cut into.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EdgeSide {
+    /// To the right of `start → end`.
+    Right,
+    /// To the left of `start → end`.
+    Left,
+}
+
+/// How [`cut_many_into_edge`] takes its shapes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShapeOrder {
+    /// As drawn.
+    AsDrawn,
+    /// Mirrored (their order along the edge reversed) first.
+    Mirrored,
+}
+
+/// Result of [`cut_into_edge`] (and of [`PanelId::add_dart`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Cut {
     /// Every edge replacing the base edge, in order.
@@ -63,9 +84,10 @@ pub struct Cut {
 
 /// Insert a copy of `shape` (an open chain) into `base`, centred at arc length
 /// `offset` from its start, rotated so its opening lies along the edge and placed on
-/// the `right` (or left) of the edge direction. The base edge itself is not changed;
+/// the given `side` of the edge direction. The base edge itself is not changed;
 /// the caller substitutes [`Cut::edges`] for it where needed.
-pub fn cut_into_edge(a: &mut Arena, shape: &EdgeSeq, base: EdgeId, offset: f64, right: bool) -> Result<Cut> {
+pub fn cut_into_edge(a: &mut Arena, shape: &EdgeSeq, base: EdgeId, offset: f64, side: EdgeSide) -> Result<Cut> {
+    let right = side == EdgeSide::Right;
     const TOL: f64 = 1e-2;
     let mut new_edges = shape.copy(a);
     new_edges.snap_to(a, Vec2::ZERO);
@@ -144,8 +166,9 @@ pub fn cut_into_edge(a: &mut Arena, shape: &EdgeSeq, base: EdgeId, offset: f64, 
 }
 
 /// Several shapes (drawn in one frame with vertical openings) cut into one edge,
-/// keeping their relative positions; `flip` mirrors them first.
-pub fn cut_many_into_edge(a: &mut Arena, shapes: &[EdgeSeq], base: EdgeId, offset: f64, right: bool, flip: bool) -> Result<Cut> {
+/// keeping their relative positions.
+pub fn cut_many_into_edge(a: &mut Arena, shapes: &[EdgeSeq], base: EdgeId, offset: f64, side: EdgeSide, order: ShapeOrder) -> Result<Cut> {
+    let flip = order == ShapeOrder::Mirrored;
     let ys = |a: &Arena, s: &EdgeSeq| {
         let (p, q) = s.shortcut(a);
         (p.y, q.y)
@@ -185,7 +208,7 @@ pub fn cut_many_into_edge(a: &mut Arena, shapes: &[EdgeSeq], base: EdgeId, offse
     let mut all = EdgeSeq(vec![base]);
     let mut shape_edges = EdgeSeq::new();
     for (off, i) in placed {
-        let cut = cut_into_edge(a, &shapes[i], proj_edge, off, right)?;
+        let cut = cut_into_edge(a, &shapes[i], proj_edge, off, side)?;
         all.substitute(proj_edge, &cut.edges)?;
         leftovers.substitute(proj_edge, &cut.leftovers)?;
         shape_edges.extend(cut.shape.iter().copied());
@@ -246,12 +269,21 @@ fn fit_location_on_edge(curve: &Segment, t: f64, width: f64) -> ([f64; 2], f64) 
     (s, objective(r))
 }
 
+/// Result of [`cut_corner`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct CornerCut {
+    /// The inserted copy of the shape, in the panel's loop.
+    pub shape: EdgeSeq,
+    /// A new interface of the panel over the inserted shape.
+    pub interface: InterfaceId,
+}
+
 /// Replace the corner between the two edges of `corner` (an interface of one panel)
 /// by a copy of `shape`, placed so that its opening vector spans the corner. Every
 /// interface of the panel that used the corner edges now uses their remaining
-/// pieces; a new interface over the inserted shape is registered with the panel
-/// (named `int_<n>`) and returned with the shape's edges.
-pub fn cut_corner(a: &mut Arena, shape: &EdgeSeq, corner: InterfaceId) -> Result<(EdgeSeq, InterfaceId)> {
+/// pieces; a new interface of the panel over the inserted shape is returned with
+/// the shape's edges.
+pub fn cut_corner(a: &mut Arena, shape: &EdgeSeq, corner: InterfaceId) -> Result<CornerCut> {
     let mut corner_shape = shape.copy(a);
     let panel: PanelId = corner.panels(a)[0];
     {
@@ -296,16 +328,14 @@ pub fn cut_corner(a: &mut Arena, shape: &EdgeSeq, corner: InterfaceId) -> Result
     let res = loop_edges.remove_edge(e0).and_then(|_| loop_edges.substitute(e1, &corner_shape));
     *panel.edges_mut(a) = loop_edges;
     res?;
-    let registered: Vec<InterfaceId> = panel.interfaces(a).iter().map(|(_, i)| *i).collect();
+    let registered: Vec<InterfaceId> = panel.interfaces(a).to_vec();
     for i in registered {
         i.replace_edge(a, e0, cut1);
         i.replace_edge(a, e1, cut2);
     }
     let inserted = corner_shape.slice(1, -1);
-    let new_int = a.interface(panel, inserted.clone());
-    let name = format!("int_{}", panel.interfaces(a).len());
-    panel.add_interface(a, &name, new_int);
-    Ok((inserted, new_int))
+    let interface = a.interface(panel, inserted.clone());
+    Ok(CornerCut { shape: inserted, interface })
 }
 
 /// Parameters `(l0, l1)` in `[0, 1]²` minimising `|c2(l1) − c1(l0) − opening|²`.
@@ -374,35 +404,39 @@ fn fit_location_on_corner(c1: &Segment, c2: &Segment, opening: Vec2) -> [f64; 2]
     l
 }
 
-/// Copies of a panel distributed around the world y axis: the original is renamed
-/// `<tag>_0`, copy `i` is copy `i−1` rotated by 360°/n about y.
-pub fn distribute_y(a: &mut Arena, panel: PanelId, n: usize, tag: &str) -> Vec<PanelId> {
-    panel.set_name(a, &format!("{tag}_0"));
+/// Copies of a panel (or panel class) distributed around the world y axis: the
+/// original is renamed `<tag>_0`, copy `i` is copy `i−1` rotated by 360°/n about y.
+/// Each copy is the same type as the original, with its own interfaces.
+pub fn distribute_y<T: PanelPart + Remap>(a: &mut Arena, first: T, n: usize, tag: &str) -> Vec<T> {
+    first.panel_id().set_name(a, &format!("{tag}_0"));
     let q = Rotation::from_euler_xyz_degrees([0.0, 360.0 / n as f64, 0.0]);
-    let mut out = vec![panel];
+    let mut out = vec![first];
     for i in 1..n {
-        let prev = *out.last().expect("at least one panel");
-        let p = prev.deep_copy(a, &format!("{tag}_{i}"));
+        let copy = out.last().expect("at least one panel").deep_copy(a);
+        let p = copy.panel_id();
+        p.set_name(a, &format!("{tag}_{i}"));
         p.rotate_by(a, q);
         let t = q.apply(p.translation(a));
         p.translate_to(a, t);
-        out.push(p);
+        out.push(copy);
     }
     out
 }
 
-/// Copies of a panel in a horizontal row, `stride` apart along the horizontal
-/// direction in the panel plane: the original is renamed `<tag>_0`.
-pub fn distribute_horizontally(a: &mut Arena, panel: PanelId, n: usize, stride: f64, tag: &str) -> Vec<PanelId> {
+/// Copies of a panel (or panel class) in a horizontal row, `stride` apart along the
+/// horizontal direction in the panel plane: the original is renamed `<tag>_0`.
+pub fn distribute_horizontally<T: PanelPart + Remap>(a: &mut Arena, first: T, n: usize, stride: f64, tag: &str) -> Vec<T> {
+    let panel = first.panel_id();
     panel.set_name(a, &format!("{tag}_0"));
     let dir = panel.rotation(a).apply(Vec3::Z).cross(Vec3::Y);
     let delta = dir / dir.length() * stride;
-    let mut out = vec![panel];
+    let mut out = vec![first];
     for i in 1..n {
-        let prev = *out.last().expect("at least one panel");
-        let p = prev.deep_copy(a, &format!("{tag}_{i}"));
+        let copy = out.last().expect("at least one panel").deep_copy(a);
+        let p = copy.panel_id();
+        p.set_name(a, &format!("{tag}_{i}"));
         p.translate_by(a, delta);
-        out.push(p);
+        out.push(copy);
     }
     out
 }
@@ -423,10 +457,10 @@ pub fn even_armhole_openings(a: &mut Arena, front: &mut EdgeSeq, back: &mut Edge
     let slope_perp = Vec2::new(-slope.y, slope.x);
     let mid = (s0 + s1) / 2.0;
     let (l0, l1) = (mid - 20.0 * slope_perp, mid + 20.0 * slope_perp);
-    let line = intersect::Seg::Line([[l0.x, l0.y], [l1.x, l1.y]]);
+    let line = Seg::Line([[l0.x, l0.y], [l1.x, l1.y]]);
     let target = intersect::to_seg(&a.geom(cfront.last_edge()).segment());
     // The reference builds this line from Python complex numbers, the curve from numpy ones.
-    let hits = intersect::svg::try_intersect_as(&target, intersect::Num::Numpy, &line, intersect::Num::Python)
+    let hits = try_intersect_as(&target, Num::Numpy, &line, Num::Python)
         .map_err(|e| Error::Geometry(format!("balancing the sleeve openings: {e}")))?;
     if let Some(&(t, _)) = hits.first() {
         if !(close_enough(t, 0.0, tol) || close_enough(t, 1.0, tol)) {
@@ -473,7 +507,7 @@ mod tests {
         let mut a = Arena::new();
         let base = a.line(v(0., 0.), v(20., 0.)).unwrap();
         let dart = dart_shape(&mut a, 4.0, DartSize::Depth(6.0)).unwrap();
-        let cut = cut_into_edge(&mut a, &dart, base, 10.0, true).unwrap();
+        let cut = cut_into_edge(&mut a, &dart, base, 10.0, EdgeSide::Right).unwrap();
         assert_eq!(cut.edges.len(), 4);
         assert_eq!(cut.shape.len(), 2);
         assert_eq!(cut.leftovers.len(), 2);
@@ -482,10 +516,10 @@ mod tests {
         assert!((tip - v(10., -6.)).length() < 1e-9, "tip {tip}");
         assert!((a.pos(a.start(cut.shape[0])) - v(8., 0.)).length() < 1e-9);
         // Same shape on the left of the edge.
-        let cut = cut_into_edge(&mut a, &dart, base, 10.0, false).unwrap();
+        let cut = cut_into_edge(&mut a, &dart, base, 10.0, EdgeSide::Left).unwrap();
         assert!((a.pos(a.end(cut.shape[0])) - v(10., 6.)).length() < 1e-9);
         // Too close to the end.
-        assert!(cut_into_edge(&mut a, &dart, base, 1.0, true).is_err());
+        assert!(cut_into_edge(&mut a, &dart, base, 1.0, EdgeSide::Right).is_err());
     }
 
     #[test]
@@ -495,7 +529,7 @@ mod tests {
         let e = a.vertex(v(20., 0.));
         let base = a.edge(s, e, Curve::Quadratic(v(0.5, -0.2))).unwrap();
         let dart = dart_shape(&mut a, 3.0, DartSize::Side(5.0)).unwrap();
-        let cut = cut_into_edge(&mut a, &dart, base, 9.0, true).unwrap();
+        let cut = cut_into_edge(&mut a, &dart, base, 9.0, EdgeSide::Right).unwrap();
         let p = a.pos(a.start(cut.shape[0]));
         let q = a.pos(a.end(cut.shape[1]));
         assert!(((p - q).length() - 3.0).abs() < 1e-9);
@@ -511,14 +545,13 @@ mod tests {
         let p = a.new_panel("p");
         p.set_edges(&mut a, edges.clone());
         let corner = a.interface(p, EdgeSeq(vec![edges[0], edges[1]]));
-        p.add_interface(&mut a, "corner", corner);
         let shape = EdgeSeq::from_points(&mut a, &[v(0., 0.), v(3., 1.), v(4., 4.)], false).unwrap();
-        let (inserted, int) = cut_corner(&mut a, &shape, corner).unwrap();
+        let CornerCut { shape: inserted, interface: int } = cut_corner(&mut a, &shape, corner).unwrap();
         assert_eq!(inserted.len(), 2);
         let loop_edges = p.edges(&a).clone();
         assert_eq!(loop_edges.len(), 6);
         assert!(loop_edges.is_loop(&a) && loop_edges.is_chained(&a));
-        assert_eq!(p.interface(&a, "int_1"), Some(int));
+        assert_eq!(p.interfaces(&a), &[corner, int], "the new interface belongs to the panel");
         let start = a.pos(a.start(inserted[0]));
         let end = a.pos(a.end(inserted[1]));
         assert!((end - start - v(4., 4.)).length() < 1e-9);

@@ -5,30 +5,13 @@
 //! without the author thinking about loop directions. Pivot changes truncate to whole
 //! centimetres as the reference does, so written vertices match its files.
 
-use crate::arena::{Arena, EdgeId, InterfaceId, PanelId};
+use crate::arena::EdgeSeq;
+use crate::arena::StitchRule;
+use crate::arena::{Arena, EdgeId, InterfaceId, PanelData, PanelId};
 use crate::error::Result;
 use crate::math::{Vec2, Vec3, trunc};
+use crate::ops::{Cut, EdgeSide};
 use crate::rotation::Rotation;
-use crate::seq::EdgeSeq;
-use crate::stitch::StitchRule;
-
-/// Stored panel.
-#[derive(Clone, Debug)]
-pub(crate) struct PanelData {
-    pub name: String,
-    pub label: String,
-    pub translation: Vec3,
-    pub rotation: Rotation,
-    pub edges: EdgeSeq,
-    /// Named interfaces registered with the panel, in insertion order (corner cuts
-    /// update all of them and add new ones named `int_<n>`).
-    pub interfaces: Vec<(String, InterfaceId)>,
-    /// Stitches inside the panel (darts).
-    pub stitches: Vec<StitchRule>,
-    /// When set, the panel's "length" is this interface's length instead of its
-    /// bounding-box height.
-    pub length_interface: Option<InterfaceId>,
-}
 
 impl Arena {
     /// A new empty panel at the origin.
@@ -111,23 +94,8 @@ impl PanelId {
         a.pd(self).rotation
     }
 
-    /// Register a named interface with the panel.
-    pub fn add_interface(self, a: &mut Arena, name: &str, i: InterfaceId) {
-        let d = a.pd_mut(self);
-        if let Some(slot) = d.interfaces.iter_mut().find(|(n, _)| n == name) {
-            slot.1 = i;
-        } else {
-            d.interfaces.push((name.to_string(), i));
-        }
-    }
-
-    /// A registered interface by name.
-    pub fn interface(self, a: &Arena, name: &str) -> Option<InterfaceId> {
-        a.pd(self).interfaces.iter().find(|(n, _)| n == name).map(|(_, i)| *i)
-    }
-
-    /// Names and ids of the registered interfaces.
-    pub fn interfaces(self, a: &Arena) -> &[(String, InterfaceId)] {
+    /// The interfaces made over this panel's edges, in creation order.
+    pub fn interfaces(self, a: &Arena) -> &[InterfaceId] {
         &a.pd(self).interfaces
     }
 
@@ -354,11 +322,12 @@ impl PanelId {
         self
     }
 
-    /// Insert a dart shape into `edge` centred at arc length `offset`, and stitch its
-    /// two legs together. Returns the edges replacing `edge` and the leftover pieces
-    /// of the original edge. The panel loop is not modified (callers substitute).
-    pub fn add_dart(self, a: &mut Arena, shape: &EdgeSeq, edge: EdgeId, offset: f64, right: bool) -> Result<(EdgeSeq, EdgeSeq)> {
-        let cut = crate::ops::cut_into_edge(a, shape, edge, offset, right)?;
+    /// Insert a dart shape into `edge` centred at arc length `offset` on `side`, and
+    /// stitch its two legs together. Returns the cut: the edges replacing `edge`,
+    /// the dart's legs and the leftover pieces of the original edge. The panel loop
+    /// is not modified (callers substitute).
+    pub fn add_dart(self, a: &mut Arena, shape: &EdgeSeq, edge: EdgeId, offset: f64, side: EdgeSide) -> Result<Cut> {
+        let cut = crate::ops::cut_into_edge(a, shape, edge, offset, side)?;
         if cut.shape.len() < 2 {
             // A dart narrower than the closeness tolerance collapses to one edge.
             return Err(crate::Error::Dart(format!(
@@ -371,7 +340,7 @@ impl PanelId {
         let l1 = a.interface(self, cut.shape[1]);
         let rule = StitchRule::new(a, l0, l1)?;
         self.add_stitch(a, rule);
-        Ok((cut.edges, cut.leftovers))
+        Ok(cut)
     }
 
     /// Whether the outline crosses itself (the reference's check: arcs replaced by 11
@@ -386,45 +355,9 @@ impl PanelId {
     /// its points, so a crossing stays one).
     pub fn check_outline(self, a: &Arena) -> Result<()> {
         if a.stop_at_self_intersection && self.is_self_intersecting(a) {
-            return Err(crate::Error::SelfIntersecting { panel: self.name(a).to_string() });
+            return Err(crate::error::Error::SelfIntersecting { panel: self.name(a).to_string() });
         }
         Ok(())
-    }
-
-    /// Deep copy under a new name: new edges, vertices, interfaces and darts.
-    pub fn deep_copy(self, a: &mut Arena, name: &str) -> PanelId {
-        let src = a.pd(self).clone();
-        let new_edges = a.copy_edges(&src.edges);
-        let map: Vec<(EdgeId, EdgeId)> = src.edges.iter().copied().zip(new_edges.iter().copied()).collect();
-        let new = a.new_panel(name);
-        let map_iface = |a: &mut Arena, i: InterfaceId| -> InterfaceId {
-            let mut d = a.iface(i).clone();
-            for e in d.edges.iter_mut() {
-                if let Some((_, n)) = map.iter().find(|(o, _)| o == e) {
-                    *e = *n;
-                }
-            }
-            for p in d.panels.iter_mut() {
-                if *p == self {
-                    *p = new;
-                }
-            }
-            a.interfaces.push(d);
-            InterfaceId((a.interfaces.len() - 1) as u32)
-        };
-        let interfaces: Vec<(String, InterfaceId)> = src.interfaces.iter().map(|(n, i)| (n.clone(), map_iface(a, *i))).collect();
-        let stitches: Vec<StitchRule> = src.stitches.iter().map(|r| StitchRule { a: map_iface(a, r.a), b: map_iface(a, r.b) }).collect();
-        let length_interface =
-            src.length_interface.map(|i| src.interfaces.iter().position(|(_, j)| *j == i).map(|k| interfaces[k].1).unwrap_or(i));
-        let d = a.pd_mut(new);
-        d.label = src.label;
-        d.translation = src.translation;
-        d.rotation = src.rotation;
-        d.edges = EdgeSeq(new_edges);
-        d.interfaces = interfaces;
-        d.stitches = stitches;
-        d.length_interface = length_interface;
-        new
     }
 }
 

@@ -4,30 +4,59 @@
 
 use garmentcode::curves::{match_tangents, quadratic_with_extremum};
 use garmentcode::ops::{
-    DartSize, cut_corner, cut_into_edge, cut_many_into_edge, dart_shape, distribute_horizontally, distribute_y, side_with_cut,
+    CornerCut, Cut, DartSize, EdgeSide, ShapeOrder, cut_corner, cut_into_edge, cut_many_into_edge, dart_shape, distribute_horizontally,
+    distribute_y, side_with_cut,
 };
-use garmentcode::pattern::{Severity, validate};
-use garmentcode::{Align, Arena, Curve, EdgeSeq, Gather, InterfaceId, PanelId, PartExt, Pattern, Rotation, StitchRule, Vec2, Vec3};
+use garmentcode::{
+    Align, Arena, Component, Curve, Edge, EdgeSeq, Gather, InterfaceId, Interfaces, PanelId, PartExt, Pattern, Rotation, Severity,
+    StitchRule, Vec2, Vec3, validate,
+};
 
 fn v2(x: f64, y: f64) -> Vec2 {
     Vec2::new(x, y)
 }
 
-/// A rectangle `w × h` with its pivot at the top centre; interfaces `bottom`,
-/// `right`, `top`, `left` (edges in that order, counter-clockwise).
-fn rectangle(a: &mut Arena, name: &str, w: f64, h: f64) -> PanelId {
-    let edges = EdgeSeq::from_points(a, &[v2(0.0, 0.0), v2(w, 0.0), v2(w, h), v2(0.0, h)], true).unwrap();
-    let p = a.panel_with_edges(name, edges.clone());
-    p.set_pivot(a, v2(w / 2.0, h), false);
-    for (i, side) in ["bottom", "right", "top", "left"].into_iter().enumerate() {
-        let iface = a.interface(p, edges[i]);
-        p.add_interface(a, side, iface);
-    }
-    p
+/// A rectangle panel with an interface on each side.
+#[derive(Clone, Component)]
+struct Rect {
+    #[panel]
+    panel: PanelId,
+    #[interface]
+    bottom: InterfaceId,
+    #[interface]
+    right: InterfaceId,
+    #[interface]
+    top: InterfaceId,
+    #[interface]
+    left: InterfaceId,
 }
 
-fn iface(a: &Arena, p: PanelId, name: &str) -> InterfaceId {
-    p.interface(a, name).unwrap_or_else(|| panic!("{} has no interface {name}", p.name(a)))
+/// A rectangle `w × h` with its pivot at the top centre (edges bottom, right, top,
+/// left: counter-clockwise).
+fn rectangle(a: &mut Arena, name: &str, w: f64, h: f64) -> Rect {
+    let edges = EdgeSeq::from_points(a, &[v2(0.0, 0.0), v2(w, 0.0), v2(w, h), v2(0.0, h)], true).unwrap();
+    let panel = a.panel_with_edges(name, edges.clone());
+    panel.set_pivot(a, v2(w / 2.0, h), false);
+    Rect {
+        panel,
+        bottom: a.interface(panel, edges[0]),
+        right: a.interface(panel, edges[1]),
+        top: a.interface(panel, edges[2]),
+        left: a.interface(panel, edges[3]),
+    }
+}
+
+/// A skirt gore sewn by parts of its sides and gathered at the top.
+#[derive(Clone, Component)]
+struct Gore {
+    #[panel]
+    panel: PanelId,
+    #[interface]
+    right: InterfaceId,
+    #[interface]
+    left: InterfaceId,
+    #[interface]
+    top: InterfaceId,
 }
 
 /// A tiny component: a list of panels plus stitches.
@@ -78,7 +107,8 @@ fn close(a: f64, b: f64, tol: f64) -> bool {
 fn bodice_block_corner_and_edge_projection() {
     let mut a = Arena::new();
     let a = &mut a;
-    let front = rectangle(a, "front", 24.0, 40.0);
+    let front_rect = rectangle(a, "front", 24.0, 40.0);
+    let front = front_rect.panel;
     let e = front.edges(a).clone();
     let corner = a.interface(front, EdgeSeq(vec![e[1], e[2]]));
 
@@ -86,22 +116,22 @@ fn bodice_block_corner_and_edge_projection() {
     let armhole = EdgeSeq::from_points(a, &[v2(0.0, 0.0), v2(-8.0, 18.0)], false).unwrap();
     a.set_curve(armhole[0], Curve::Cubic(v2(0.3, -0.1), v2(0.8, -0.35)));
     let before = front.edges(a).length(a);
-    let (arm_edges, arm_iface) = cut_corner(a, &armhole, corner).unwrap();
+    let CornerCut { shape: arm_edges, interface: arm_iface } = cut_corner(a, &armhole, corner).unwrap();
     assert_eq!(arm_edges.len(), 1);
     let arm = a.geom(arm_edges[0]);
     assert!(close((arm.end - arm.start).length(), (8f64 * 8.0 + 18.0 * 18.0).sqrt(), 1e-9));
     assert!(front.edges(a).is_loop(a));
     assert!(front.edges(a).length(a) != before);
-    assert_eq!(arm_iface, iface(a, front, "int_4"));
+    assert_eq!(front.interfaces(a).last(), Some(&arm_iface), "the cut's interface belongs to the panel");
 
     // Neckline: a quadratic 9 cm wide whose extremum lies 9 cm below its chord, cut
     // into the top edge 4 cm from its end (the top edge runs right to left).
-    let top = iface(a, front, "top").edges(a)[0];
-    let control = quadratic_with_extremum(v2(0.5, -1.0)).unwrap();
+    let top = front_rect.top.edges(a)[0];
+    let curve = quadratic_with_extremum(v2(0.5, -1.0)).unwrap();
     let neck = EdgeSeq::from_points(a, &[v2(0.0, 0.0), v2(9.0, 0.0)], false).unwrap();
-    a.set_curve(neck[0], Curve::Quadratic(control));
+    a.set_curve(neck[0], curve);
     let top_len = a.edge_length(top);
-    let cut = cut_into_edge(a, &neck, top, top_len - 4.5 - 4.0, false).unwrap();
+    let cut = cut_into_edge(a, &neck, top, top_len - 4.5 - 4.0, EdgeSide::Left).unwrap();
     let mut outline = front.edges(a).clone();
     outline.substitute(top, cut.edges.as_slice()).unwrap();
     front.set_edges(a, outline);
@@ -112,7 +142,10 @@ fn bodice_block_corner_and_edge_projection() {
 
     // Back: a deep copy mirrored to the other side of the body.
     front.translate_to(a, Vec3::new(0.0, 140.0, 15.0));
-    let back = front.deep_copy(a, "back");
+    let back_rect = front_rect.deep_copy(a);
+    let back = back_rect.panel;
+    back.set_name(a, "back");
+    assert!(back_rect.interfaces().iter().all(|(_, i)| i.panels(a) == [back]), "the copy has interfaces of its own");
     back.translate_to(a, Vec3::new(0.0, 140.0, -15.0));
     back.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 180.0, 0.0]));
     back.mirror(a);
@@ -120,10 +153,7 @@ fn bodice_block_corner_and_edge_projection() {
     let back_shoulder =
         a.interface(back, back.edges(a).iter().copied().find(|&e| a.edge_length(e) == a.geom(cut.leftovers[0]).length()).unwrap());
 
-    let stitches = vec![
-        StitchRule::new(a, iface(a, front, "left"), iface(a, back, "left")).unwrap(),
-        StitchRule::new(a, shoulder, back_shoulder).unwrap(),
-    ];
+    let stitches = vec![StitchRule::new(a, front_rect.left, back_rect.left).unwrap(), StitchRule::new(a, shoulder, back_shoulder).unwrap()];
     let group = Group { panels: vec![front, back], stitches };
     let (pattern, json) = assemble(a, &group, "bodice_block");
     assert_eq!(pattern.panels.len(), 2);
@@ -152,7 +182,7 @@ fn distributed_gores_with_darts_and_gathered_waist() {
         shapes.push(d);
     }
     let waist_len = a.edge_length(s[1]);
-    let cut = cut_many_into_edge(a, &shapes, s[1], waist_len / 2.0, true, false).unwrap();
+    let cut = cut_many_into_edge(a, &shapes, s[1], waist_len / 2.0, EdgeSide::Right, ShapeOrder::AsDrawn).unwrap();
     assert_eq!(cut.shape.len(), 4, "two darts of two legs");
     assert!(close(cut.leftovers.length(a) + 1.5 + 1.5, waist_len, 0.05), "{} vs {waist_len}", cut.leftovers.length(a));
     let mut outline = s.clone();
@@ -175,7 +205,6 @@ fn distributed_gores_with_darts_and_gathered_waist() {
     outline.substitute(outline[0], side.as_slice()).unwrap();
     gore.set_edges(a, outline.clone());
     let sewn_right = a.interface(gore, side[0]);
-    gore.add_interface(a, "right", sewn_right);
     // The left side likewise, so that the sewn parts of neighbouring sides match.
     let left_edge = outline.at(-2);
     let (top_left, bottom_left) = (a.start(left_edge), a.end(left_edge));
@@ -183,45 +212,44 @@ fn distributed_gores_with_darts_and_gathered_waist() {
     outline.substitute(left_edge, left_side.as_slice()).unwrap();
     gore.set_edges(a, outline.clone());
     let sewn_left = a.interface(gore, left_side[1]);
-    gore.add_interface(a, "left", sewn_left);
     let waist: Vec<_> = cut.leftovers.iter().copied().collect();
     let waist_iface = a.interface(gore, EdgeSeq(waist));
-    gore.add_interface(a, "top", waist_iface);
+    let gore = Gore { panel: gore, right: sewn_right, left: sewn_left, top: waist_iface };
 
     gore.translate_to(a, Vec3::new(-15.0, 100.0, 0.0));
     gore.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, -90.0, 0.0]));
     let gores = distribute_y(a, gore, 4, "gore");
-    assert_eq!(gores.iter().map(|g| g.name(a).to_string()).collect::<Vec<_>>(), ["gore_0", "gore_1", "gore_2", "gore_3"]);
-    let t1 = gores[1].translation(a);
-    let t0 = gores[0].translation(a);
+    assert_eq!(gores.iter().map(|g| g.panel.name(a).to_string()).collect::<Vec<_>>(), ["gore_0", "gore_1", "gore_2", "gore_3"]);
+    assert_eq!(gores[3].panel.stitches(a).len(), 2, "copies keep their darts");
+    let t1 = gores[1].panel.translation(a);
+    let t0 = gores[0].panel.translation(a);
     assert!(close(t1.length(), t0.length(), 1e-9), "copies keep their distance to the axis");
 
     let mut stitches = Vec::new();
     for i in 0..4 {
-        let (l, r) = (iface(a, gores[i], "left"), iface(a, gores[(i + 1) % 4], "right"));
-        stitches.push(StitchRule::new(a, l, r).unwrap());
+        stitches.push(StitchRule::new(a, gores[i].left, gores[(i + 1) % 4].right).unwrap());
     }
     // Each gore's waist is gathered twofold onto a flat band.
     let tops: Vec<_> = gores
         .iter()
-        .map(|&g| {
-            let edges = iface(a, g, "top").edges(a).clone();
-            a.interface_gathered(g, edges, Gather::Uniform(2.0)).unwrap()
+        .map(|g| {
+            let edges = g.top.edges(a).clone();
+            a.interface_gathered(g.panel, edges, Gather::Uniform(2.0)).unwrap()
         })
         .collect();
     let skirt_waist = a.interface_from(&tops);
     assert_eq!(skirt_waist.ruffle(a).len(), 4);
     let band = rectangle(a, "band", skirt_waist.length(a) / 2.0, 5.0);
-    let band_bottom = iface(a, band, "bottom");
+    let band_bottom = band.bottom;
     band.translate_to(a, Vec3::new(0.0, 0.0, 20.0));
     band.place_by_interface(a, band_bottom, skirt_waist, 2.0, Align::Center);
     let (blo, _) = band.bbox3d(a);
     let (_, shi) = gores[0].bbox3d(a);
     assert!(blo.y > shi.y - 1e-6, "the band sits above the skirt ({} vs {})", blo.y, shi.y);
-    a.set_edge_label(band.edges(a)[0], "waistband");
+    a.set_edge_label(band.panel.edges(a)[0], "waistband");
     stitches.push(StitchRule::new(a, skirt_waist, band_bottom).unwrap());
-    let mut panels = gores.clone();
-    panels.push(band);
+    let mut panels: Vec<PanelId> = gores.iter().map(|g| g.panel).collect();
+    panels.push(band.panel);
     let group = Group { panels, stitches };
     let (pattern, json) = assemble(a, &group, "gathered_gores");
     assert_eq!(pattern.panels.len(), 5);
@@ -244,9 +272,9 @@ fn tiers_rows_and_tangent_matching() {
     let (_, lhi) = lower.bbox3d(a);
     assert!(close(ulo.y - lhi.y, 3.0, 1e-9));
 
-    let lower_top_edges = iface(a, lower, "top").edges(a).clone();
-    let ruffled = a.interface_gathered(lower, lower_top_edges, 1.5).unwrap();
-    let upper_bottom = iface(a, upper, "bottom");
+    let lower_top_edges = lower.top.edges(a).clone();
+    let ruffled = a.interface_gathered(lower.panel, lower_top_edges, 1.5).unwrap();
+    let upper_bottom = upper.bottom;
     let tier_seam = StitchRule::new(a, upper_bottom, ruffled).unwrap();
 
     // A row of three pockets, 12 cm apart (towards the wearer's right, as the
@@ -254,23 +282,22 @@ fn tiers_rows_and_tangent_matching() {
     let pocket = rectangle(a, "pocket", 8.0, 8.0);
     pocket.translate_to(a, Vec3::new(-12.0, 80.0, 25.0));
     let pockets = distribute_horizontally(a, pocket, 3, 12.0, "pocket");
-    let xs: Vec<f64> = pockets.iter().map(|p| p.translation(a).x).collect();
+    let xs: Vec<f64> = pockets.iter().map(|p| p.panel.translation(a).x).collect();
     assert!(close(xs[0] - xs[1], 12.0, 1e-9) && close(xs[1] - xs[2], 12.0, 1e-9), "{xs:?}");
 
     // The hem becomes a cubic fitted to given end tangents at the hem's length.
-    let hem = iface(a, lower, "bottom").edges(a)[0];
+    let hem = lower.bottom.edges(a)[0];
     let g = a.geom(hem);
-    let cps = [g.start, g.start + v2(20.0, -4.0), g.end + v2(-20.0, -4.0), g.end];
-    let fitted = match_tangents(cps, v2(1.0, -0.3).normalize(), v2(1.0, 0.3).normalize(), 64.0);
-    let b = garmentcode::bezier::Bezier::Cubic(fitted);
-    assert!(close(b.length(), 64.0, 0.01), "fitted length {}", b.length());
-    assert!(close(fitted[0].distance(g.start), 0.0, 1e-9), "the start stays put");
-    a.set_pos(a.end(hem), fitted[3]);
-    let rel = |p: Vec2| garmentcode::math::abs_to_rel(fitted[0], fitted[3], p);
-    a.set_curve(hem, Curve::Cubic(rel(fitted[1]), rel(fitted[2])));
+    let rel = |p: Vec2| garmentcode::math::abs_to_rel(g.start, g.end, p);
+    let initial = Edge { curve: Curve::Cubic(rel(g.start + v2(20.0, -4.0)), rel(g.end + v2(-20.0, -4.0))), ..g };
+    let fitted = match_tangents(&initial, v2(1.0, -0.3).normalize(), v2(1.0, 0.3).normalize(), 64.0);
+    assert!(close(fitted.length(), 64.0, 0.01), "fitted length {}", fitted.length());
+    assert!(close(fitted.start.distance(g.start), 0.0, 1e-9), "the start stays put");
+    a.set_pos(a.end(hem), fitted.end);
+    a.set_curve(hem, fitted.curve);
 
-    let mut panels = vec![upper, lower];
-    panels.extend(pockets);
+    let mut panels = vec![upper.panel, lower.panel];
+    panels.extend(pockets.iter().map(|p| p.panel));
     let group = Group { panels, stitches: vec![tier_seam] };
     let (pattern, json) = assemble(a, &group, "tiers");
     assert_eq!(pattern.panels.len(), 5);
@@ -284,10 +311,11 @@ fn tiers_rows_and_tangent_matching() {
 fn panel_dart_is_stitched() {
     let mut a = Arena::new();
     let a = &mut a;
-    let p = rectangle(a, "panel", 30.0, 20.0);
+    let rect = rectangle(a, "panel", 30.0, 20.0);
+    let p = rect.panel;
     let dart = dart_shape(a, 3.0, DartSize::Side(10.0)).unwrap();
-    let top = iface(a, p, "top").edges(a)[0];
-    let (edges, leftovers) = p.add_dart(a, &dart, top, 10.0, false).unwrap();
+    let top = rect.top.edges(a)[0];
+    let Cut { edges, leftovers, .. } = p.add_dart(a, &dart, top, 10.0, EdgeSide::Left).unwrap();
     assert_eq!(edges.len(), 4);
     assert!(close(leftovers.length(a), 27.0, 1e-9));
     assert!(close(a.edge_length(edges[1]), 10.0, 1e-9) && close(a.edge_length(edges[2]), 10.0, 1e-9));
@@ -316,7 +344,7 @@ fn outline_check_stops_only_when_asked() {
     let err = bow.check_outline(&a).unwrap_err();
     assert_eq!(err, garmentcode::Error::SelfIntersecting { panel: "bow".into() });
     assert_eq!(err.to_string(), "self-intersection: the outline of panel 'bow' crosses itself");
-    assert_eq!(square.check_outline(&a), Ok(()));
+    assert_eq!(square.panel.check_outline(&a), Ok(()));
     // The setting outlives clearing the arena for the next garment.
     a.clear();
     let bow = EdgeSeq::from_points(&mut a, &[v2(0.0, 0.0), v2(2.0, 0.0), v2(0.0, 1.0), v2(2.0, 1.0)], true).unwrap();

@@ -1,11 +1,12 @@
 //! Bands: waistbands (straight and fitted) and cuffs (band, skirt, band with skirt).
 
 use crate::circle_skirt::CircleArcPanel;
-use crate::common::{register, v2, v3};
+use crate::common::{v2, v3};
 use crate::design::{CuffKind, Design};
 use crate::skirt_paneled::SkirtPanel;
 use garmentcode::math::lerp;
-use garmentcode::{Arena, Body, Component, EdgeSeq, InterfaceId, Node, PanelId, Part, PartExt, Result, StitchRule};
+use garmentcode::slots::{Bottom, Left, Right, Top};
+use garmentcode::{Arena, Body, Component, EdgeSeq, InterfaceId, PanelId, PartExt, Result, SlotExt, StitchRule};
 
 /// A rectangle: waistband, cuff band, turtle-neck band, standing lapel back.
 #[derive(Clone, Debug, Component)]
@@ -38,7 +39,6 @@ impl StraightBandPanel {
         let top = a.interface_gathered(panel, edges[1], ruffle)?.reverse(a, true);
         let left = a.interface(panel, edges[2]);
         let bottom = a.interface_gathered(panel, edges[3], ruffle)?;
-        register(a, panel, &[("right", right), ("top", top), ("left", left), ("bottom", bottom)]);
         panel.top_center_pivot(a);
         panel.center_x(a);
         Ok(StraightBandPanel { panel, right, top, left, bottom })
@@ -46,7 +46,8 @@ impl StraightBandPanel {
 }
 
 /// Front or back panel of a waistband.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Component)]
+#[component(slots(Right, Top, Left, Bottom))]
 pub enum BandPanel {
     /// Rectangle.
     Straight(StraightBandPanel),
@@ -55,17 +56,11 @@ pub enum BandPanel {
 }
 
 impl BandPanel {
-    fn ids(&self) -> (PanelId, InterfaceId, InterfaceId, InterfaceId, InterfaceId) {
+    fn panel(&self) -> PanelId {
         match self {
-            BandPanel::Straight(p) => (p.panel, p.right, p.top, p.left, p.bottom),
-            BandPanel::Curved(p) => (p.panel, p.right, p.top, p.left, p.bottom),
+            BandPanel::Straight(p) => p.panel,
+            BandPanel::Curved(p) => p.panel,
         }
-    }
-}
-
-impl Part for BandPanel {
-    fn node(&self) -> Node<'_> {
-        Node::Panel(self.ids().0)
     }
 }
 
@@ -151,8 +146,10 @@ impl Waistband {
             )?;
             (BandPanel::Curved(f), BandPanel::Curved(b))
         };
-        let (fp, fright, ftop, fleft, fbottom) = front.ids();
-        let (bp, bright, btop, bleft, bbottom) = back.ids();
+        let (fp, fright, ftop, fleft, fbottom) =
+            (front.panel(), front.iface::<Right>(), front.iface::<Top>(), front.iface::<Left>(), front.iface::<Bottom>());
+        let (bp, bright, btop, bleft, bbottom) =
+            (back.panel(), back.iface::<Right>(), back.iface::<Top>(), back.iface::<Left>(), back.iface::<Bottom>());
         let level = body.derived().waist_level;
         fp.translate_by(a, v3(0.0, level, 20.0));
         bp.translate_by(a, v3(0.0, level, -15.0));
@@ -174,7 +171,7 @@ impl Waistband {
     }
 
     fn band_length(&self, a: &Arena) -> f64 {
-        self.front.ids().0.length(a)
+        self.front.panel().length(a)
     }
 }
 
@@ -330,8 +327,9 @@ impl CuffBandSkirt {
     }
 }
 
-/// Any cuff.
-#[derive(Clone, Debug)]
+/// Any cuff: attached by its `top`, free at its `bottom`.
+#[derive(Clone, Debug, Component)]
+#[component(slots(Top, Bottom))]
 pub enum Cuff {
     /// Band.
     Band(CuffBand),
@@ -349,33 +347,5 @@ impl Cuff {
             CuffKind::CuffSkirt => Cuff::Skirt(CuffSkirt::new(a, tag, c, None)?),
             CuffKind::CuffBandSkirt => Cuff::BandSkirt(CuffBandSkirt::new(a, tag, c)?),
         })
-    }
-
-    /// Attached end.
-    pub fn top(&self) -> InterfaceId {
-        match self {
-            Cuff::Band(c) => c.top,
-            Cuff::Skirt(c) => c.top,
-            Cuff::BandSkirt(c) => c.top,
-        }
-    }
-
-    /// Free end.
-    pub fn bottom(&self) -> InterfaceId {
-        match self {
-            Cuff::Band(c) => c.bottom,
-            Cuff::Skirt(c) => c.bottom,
-            Cuff::BandSkirt(c) => c.bottom,
-        }
-    }
-}
-
-impl Part for Cuff {
-    fn node(&self) -> Node<'_> {
-        match self {
-            Cuff::Band(c) => c.node(),
-            Cuff::Skirt(c) => c.node(),
-            Cuff::BandSkirt(c) => c.node(),
-        }
     }
 }

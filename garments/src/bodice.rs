@@ -2,12 +2,12 @@
 //! with its sleeve and collar, and the shirts made of two halves.
 
 use crate::collars::Collar;
-use crate::common::{register, tan_deg, v2, v3};
+use crate::common::{tan_deg, v2, v3};
 use crate::design::{ArmholeShape, CollarStyle, CuffKind, Design, NeckShape};
 use crate::sleeves::Sleeve;
 use garmentcode::math::lerp;
-use garmentcode::ops::{DartSize, cut_corner, dart_shape};
-use garmentcode::{Align, Arena, Body, Component, EdgeSeq, Gather, InterfaceId, PanelId, PartExt, Result, StitchRule, Vec2};
+use garmentcode::ops::{Cut, DartSize, EdgeSide, cut_corner, dart_shape};
+use garmentcode::{Align, Arena, Body, Component, EdgeSeq, InterfaceId, PanelId, PartExt, Result, StitchRule, Vec2};
 
 /// How a torso panel reports its width at a level below the shoulder.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -68,20 +68,8 @@ impl TorsoPanel {
         }
     }
 
-    fn finish(a: &mut Arena, panel: PanelId, ifaces: [InterfaceId; 6], width: f64, rule: WidthRule) -> TorsoPanel {
+    fn finish(panel: PanelId, ifaces: [InterfaceId; 6], width: f64, rule: WidthRule) -> TorsoPanel {
         let [outside, inside, shoulder, bottom, shoulder_corner, collar_corner] = ifaces;
-        register(
-            a,
-            panel,
-            &[
-                ("outside", outside),
-                ("inside", inside),
-                ("shoulder", shoulder),
-                ("bottom", bottom),
-                ("shoulder_corner", shoulder_corner),
-                ("collar_corner", collar_corner),
-            ],
-        );
         TorsoPanel { panel, outside, inside, shoulder, bottom, shoulder_corner, collar_corner, width, rule }
     }
 
@@ -110,7 +98,6 @@ impl TorsoPanel {
         let shoulder_corner = a.interface(panel, EdgeSeq(vec![edges.at(-3), edges.at(-2)]));
         let collar_corner = a.interface(panel, EdgeSeq(vec![edges.at(-2), edges.at(-1)]));
         let t = TorsoPanel::finish(
-            a,
             panel,
             [outside, inside, shoulder, bottom, shoulder_corner, collar_corner],
             width,
@@ -146,7 +133,8 @@ impl TorsoPanel {
         let side_d_width = max_len - side_len;
         let shape = dart_shape(a, side_d_width, DartSize::Side(side_d_depth))?;
         let side = edges[1];
-        let (s_edge, side_interface) = panel.add_dart(a, &shape, side, bust_line + side_d_width / 2.0, true)?;
+        let Cut { edges: s_edge, leftovers: side_interface, .. } =
+            panel.add_dart(a, &shape, side, bust_line + side_d_width / 2.0, EdgeSide::Right)?;
         edges.substitute_at(1, &s_edge);
         // Take some fabric from the top to match the shoulder width.
         let tip = a.end(s_edge.last_edge());
@@ -156,7 +144,8 @@ impl TorsoPanel {
         // Bottom dart.
         let shape = dart_shape(a, bottom_d_width, DartSize::Side(0.9 * bust_line))?;
         let bottom_edge = edges[0];
-        let (b_edge, b_interface) = panel.add_dart(a, &shape, bottom_edge, bust_point + bottom_d_width / 2.0, true)?;
+        let Cut { edges: b_edge, leftovers: b_interface, .. } =
+            panel.add_dart(a, &shape, bottom_edge, bust_point + bottom_d_width / 2.0, EdgeSide::Right)?;
         edges.substitute_at(0, &b_edge);
         let corner = a.end(b_edge.last_edge());
         let p = a.pos(corner);
@@ -168,8 +157,7 @@ impl TorsoPanel {
         let bottom = a.interface(panel, b_interface);
         let shoulder_corner = a.interface(panel, EdgeSeq(vec![edges.at(-3), edges.at(-2)]));
         let collar_corner = a.interface(panel, EdgeSeq(vec![edges.at(-2), edges.at(-1)]));
-        let t =
-            TorsoPanel::finish(a, panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::SideSlope);
+        let t = TorsoPanel::finish(panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::SideSlope);
         panel.translate_by(a, v3(0.0, body.height - body.head_l - max_len - shoulder_incl, 0.0));
         Ok(t)
     }
@@ -201,8 +189,7 @@ impl TorsoPanel {
         let mut bottom = a.interface(panel, edges[0]);
         let shoulder_corner = a.interface(panel, EdgeSeq(vec![edges.at(-3), edges.at(-2)]));
         let collar_corner = a.interface(panel, EdgeSeq(vec![edges.at(-2), edges.at(-1)]));
-        let t =
-            TorsoPanel::finish(a, panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::Constant);
+        let t = TorsoPanel::finish(panel, [outside, inside, shoulder, bottom, shoulder_corner, collar_corner], width, WidthRule::Constant);
         // Darts, when the back waist is narrower than the back (QUIRK: the width is
         // the constant half back width whatever the level).
         if waist < t.get_width(a, body, 0.0) {
@@ -214,17 +201,17 @@ impl TorsoPanel {
             let dist = bottom_d_position * 0.5;
             let shape = dart_shape(a, bottom_d_width, DartSize::Side(0.9 * bottom_d_depth))?;
             let offset = bottom_d_position + dist / 2.0 + bottom_d_width + bottom_d_width / 2.0;
-            let (mut b_edge, mut b_interface) = panel.add_dart(a, &shape, edges[0], offset, true)?;
+            let Cut { edges: mut b_edge, leftovers: mut b_interface, .. } = panel.add_dart(a, &shape, edges[0], offset, EdgeSide::Right)?;
             let shape = dart_shape(a, bottom_d_width, DartSize::Side(bottom_d_depth))?;
             let first = b_edge[0];
-            let (new_edges, leftovers) = panel.add_dart(a, &shape, first, bottom_d_position - dist / 2.0 + bottom_d_width / 2.0, true)?;
+            let Cut { edges: new_edges, leftovers, .. } =
+                panel.add_dart(a, &shape, first, bottom_d_position - dist / 2.0 + bottom_d_width / 2.0, EdgeSide::Right)?;
             b_edge.substitute(first, &new_edges)?;
             b_interface.substitute(first, &leftovers)?;
             let mut loop_edges = panel.edges(a).clone();
             loop_edges.substitute_at(0, &b_edge);
             panel.set_edges(a, loop_edges);
             bottom = a.interface(panel, b_interface);
-            panel.add_interface(a, "bottom", bottom);
             let corner = a.end(b_edge.last_edge());
             let p = a.pos(corner);
             a.set_pos(corner, Vec2::new(p.x + side_adj, p.y));
@@ -590,8 +577,8 @@ impl BodiceHalf {
         let front_w = self.ftorso.get_width(a, body, r.connecting_width);
         let back_w = self.btorso.get_width(a, body, r.connecting_width);
         let sleeve = Sleeve::armholes(a, &self.name, body, &design.sleeve, r.connecting_width, front_w, back_w)?;
-        let (_, front) = cut_corner(a, &sleeve.in_front_shape, self.ftorso.shoulder_corner)?;
-        let (_, back) = cut_corner(a, &sleeve.in_back_shape, self.btorso.shoulder_corner)?;
+        let front = cut_corner(a, &sleeve.in_front_shape, self.ftorso.shoulder_corner)?.interface;
+        let back = cut_corner(a, &sleeve.in_back_shape, self.btorso.shoulder_corner)?.interface;
         self.sleeve = Some(sleeve);
         Ok(Armholes { front, back, front_w, back_w })
     }
@@ -623,8 +610,8 @@ impl BodiceHalf {
     /// [`BodiceHalf::add_collar`]).
     fn cut_neckline(&mut self, a: &mut Arena, design: &HalfDesign, r: &Resolved) -> Result<Neckline> {
         let shapes = Collar::necklines(a, &design.collar, r)?;
-        let (_, front) = cut_corner(a, &shapes.0, self.ftorso.collar_corner)?;
-        let (_, back) = cut_corner(a, &shapes.1, self.btorso.collar_corner)?;
+        let front = cut_corner(a, &shapes.0, self.ftorso.collar_corner)?.interface;
+        let back = cut_corner(a, &shapes.1, self.btorso.collar_corner)?.interface;
         Ok(Neckline { shapes, front, back })
     }
 
@@ -732,9 +719,4 @@ impl Shirt {
     fn shirt_length(&self, a: &Arena) -> f64 {
         self.right.part_length(a)
     }
-}
-
-#[allow(dead_code)]
-fn _gather_used(g: Gather) -> Gather {
-    g
 }

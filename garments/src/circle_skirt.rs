@@ -1,10 +1,10 @@
 //! Circle skirts: annulus-sector panels, the symmetric circle skirt and the
 //! asymmetric (shorter in front) full-circle skirt.
 
-use crate::common::{eval_rise, register, v2, v3};
+use crate::common::{eval_rise, v2, v3};
 use crate::design::Design;
-use garmentcode::arc;
-use garmentcode::ops::{DartSize, cut_into_edge, dart_shape};
+use garmentcode::curves;
+use garmentcode::ops::{DartSize, EdgeSide, cut_into_edge, dart_shape};
 use garmentcode::{Arena, Body, Component, Curve, EdgeSeq, InterfaceId, PanelId, Result, StitchRule};
 use std::f64::consts::PI;
 
@@ -46,12 +46,12 @@ impl CircleArcPanel {
         let large = half > PI / 2.0;
         let p0 = a.vertex(v2(-dist_w / 2.0, 0.0));
         let p1 = a.vertex(v2(dist_w / 2.0, 0.0));
-        let cy = arc::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, large, true);
+        let cy = curves::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, large, true);
         let top = a.edge(p0, p1, Curve::Arc { cy })?;
         let p2 = a.vertex(v2(dist_out / 2.0, -vert_len));
         let side = a.edge(p1, p2, Curve::Line)?;
         let p3 = a.vertex(v2(-dist_out / 2.0, -vert_len));
-        let cy = arc::cy_from_radius(a.pos(p2), a.pos(p3), top_rad + length, large, false);
+        let cy = curves::cy_from_radius(a.pos(p2), a.pos(p3), top_rad + length, large, false);
         let bottom = a.edge(p2, p3, Curve::Arc { cy })?;
         let mut edges = EdgeSeq(vec![top, side, bottom]);
         edges.close_loop(a)?;
@@ -72,7 +72,6 @@ impl CircleArcPanel {
         let bottom = a.interface_gathered(panel, edges[2], bottom_ruffle)?;
         let left = a.interface(panel, edges[1]);
         let right = a.interface(panel, edges[3]);
-        register(a, panel, &[("top", top), ("bottom", bottom), ("left", left), ("right", right)]);
         panel.set_length_interface(a, right);
         Ok(CircleArcPanel { panel, top, bottom, left, right })
     }
@@ -143,12 +142,12 @@ impl AsymHalfCirclePanel {
         let dist_out = 2.0 * (top_rad + length_s);
         let p0 = a.vertex(v2(-dist_w / 2.0, 0.0));
         let p1 = a.vertex(v2(dist_w / 2.0, 0.0));
-        let cy = arc::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, false, true);
+        let cy = curves::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, false, true);
         let top = a.edge(p0, p1, Curve::Arc { cy })?;
         let p2 = a.vertex(v2(dist_out / 2.0, 0.0));
         let side = a.edge(p1, p2, Curve::Line)?;
         let p3 = a.vertex(v2(-dist_out / 2.0, 0.0));
-        let cy = arc::cy_from_three_points(a.pos(p2), a.pos(p3), v2(0.0, -(top_rad + length_f)));
+        let cy = curves::cy_from_three_points(a.pos(p2), a.pos(p3), v2(0.0, -(top_rad + length_f)));
         let bottom = a.edge(p2, p3, Curve::Arc { cy })?;
         let mut edges = EdgeSeq(vec![top, side, bottom]);
         edges.close_loop(a)?;
@@ -277,9 +276,9 @@ fn add_cut(a: &mut Arena, panel: PanelId, bottom: InterfaceId, d: &crate::design
     let t_len = a.edge_length(target);
     let offset = (d.cut.place * t_len).abs().max(width / 2.0).min(t_len - width / 2.0);
     // QUIRK: the side is decided from the current (post-orientation) edge direction.
-    let right = a.pos(a.start(target)).x > a.pos(a.end(target)).x;
+    let side = if a.pos(a.start(target)).x > a.pos(a.end(target)).x { EdgeSide::Right } else { EdgeSide::Left };
     let shape = dart_shape(a, width, DartSize::Depth(depth))?;
-    let cut = cut_into_edge(a, &shape, target, offset, right)?;
+    let cut = cut_into_edge(a, &shape, target, offset, side)?;
     let mut loop_edges = std::mem::take(panel.edges_mut(a));
     let res = loop_edges.substitute(target, &cut.edges);
     *panel.edges_mut(a) = loop_edges;

@@ -4,12 +4,11 @@
 use crate::bands::StraightBandPanel;
 use crate::bodice::{CollarParams, Resolved};
 use crate::circle_skirt::CircleArcPanel;
-use crate::common::{register, v2, v3};
-use crate::design::{CollarStyle, NeckShape};
+use crate::common::{v2, v3};
+use crate::design::CollarStyle;
 use crate::shapes::{self, NeckArgs};
-use garmentcode::bezier::Bezier;
 use garmentcode::curves::match_tangents;
-use garmentcode::{Arena, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, Node, PanelId, Part, Result, Rotation, StitchRule};
+use garmentcode::{Arena, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, PanelId, Result, Rotation, StitchRule};
 
 /// The lapel's front piece.
 #[derive(Clone, Debug, Component)]
@@ -34,7 +33,6 @@ impl SimpleLapelPanel {
         let panel = a.panel_with_edges(name, edges.clone());
         let to_collar = a.interface(panel, edges[0]);
         let to_bodice = a.interface(panel, edges[1]);
-        register(a, panel, &[("to_collar", to_collar), ("to_bodice", to_bodice)]);
         Ok(SimpleLapelPanel { panel, to_collar, to_bodice })
     }
 }
@@ -70,9 +68,7 @@ impl HoodPanel {
         let length = in_length + width / 2.0;
         let fit = |start, end, c1, c2, target: f64| {
             let e = Edge { start, end, curve: Curve::Cubic(c1, c2) };
-            let abs = e.abs_controls();
-            let fitted = match_tangents([e.start, abs[0], abs[1], e.end], v2(1.0, 0.0), v2(1.0, 0.0), target);
-            Edge::from_bezier(&Bezier::Cubic(fitted))
+            match_tangents(&e, v2(1.0, 0.0), v2(1.0, 0.0), target)
         };
         let back_curve = fit(v2(-width, -b_depth), v2(0.0, 0.0), v2(0.3, -0.2), v2(0.6, 0.2), b_length);
         let bottom_back = a.add_edge(back_curve)?;
@@ -88,7 +84,6 @@ impl HoodPanel {
         let panel = a.panel_with_edges(name, edges.clone());
         let to_other_side = a.interface(panel, edges.slice(-2, edges.len() as isize));
         let to_bodice = a.interface(panel, edges.slice(0, 2)).reverse(a, false);
-        register(a, panel, &[("to_other_side", to_other_side), ("to_bodice", to_bodice)]);
         panel.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, -90.0, 0.0]));
         panel.translate_by(a, v3(-width, 0.0, 0.0));
         Ok(HoodPanel { panel, to_other_side, to_bodice })
@@ -179,23 +174,23 @@ impl Hood2Panels {
     }
 }
 
-/// The collar of one bodice half, with the neckline shapes it projects.
-#[derive(Clone, Debug)]
+/// The collar of one bodice half.
+#[derive(Clone, Debug, Component)]
 pub enum Collar {
     /// Just the neckline.
-    NoPanels {
-        /// Front neckline shape.
-        front_proj: EdgeSeq,
-        /// Back neckline shape.
-        back_proj: EdgeSeq,
-    },
+    NoPanels(NoCollar),
     /// Turtle neck.
-    Turtle(Turtle, EdgeSeq, EdgeSeq),
+    Turtle(Turtle),
     /// Lapel.
-    Lapel(SimpleLapel, EdgeSeq, EdgeSeq),
+    Lapel(SimpleLapel),
     /// Hood.
-    Hood(Hood2Panels, EdgeSeq, EdgeSeq),
+    Hood(Hood2Panels),
 }
+
+/// The collar of a plain neckline: no panels.
+#[derive(Clone, Debug, Component)]
+#[component(name = "NoPanelsCollar")]
+pub struct NoCollar {}
 
 impl Collar {
     /// The front and back neckline shapes the collar style cuts into the torso:
@@ -226,7 +221,7 @@ impl Collar {
         let width = r.collar_width;
         let (f, b) = necklines;
         match c.style {
-            None => Ok(Collar::NoPanels { front_proj: f, back_proj: b }),
+            None => Ok(Collar::NoPanels(NoCollar {})),
             Some(CollarStyle::Turtle) => {
                 let depth = c.depth;
                 let (lf, lb) = (f.length(a), b.length(a));
@@ -238,7 +233,7 @@ impl Collar {
                 let stitches = vec![StitchRule::new(a, front.right, back.right)?];
                 let bottom = a.interface_from(&[front.bottom, back.bottom]);
                 let t = Turtle { name: format!("Turtle_{tag}"), front_i: front.left, back_i: back.left, front, back, bottom, stitches };
-                Ok(Collar::Turtle(t, f, b))
+                Ok(Collar::Turtle(t))
             }
             Some(CollarStyle::SimpleLapel) => {
                 let depth = c.depth;
@@ -263,7 +258,7 @@ impl Collar {
                 let to_bodice = front.to_bodice.set_right_wrong(a, true);
                 let bottom = a.interface_from(&[to_bodice, back_bottom]);
                 let l = SimpleLapel { name: format!("Turtle_{tag}"), front, back: back_panel, back_i: back_left, bottom, stitches };
-                Ok(Collar::Lapel(l, f, b))
+                Ok(Collar::Lapel(l))
             }
             Some(CollarStyle::Hood2Panels) => {
                 let (lf, lb) = (f.length(a), b.length(a));
@@ -280,33 +275,25 @@ impl Collar {
                 )?;
                 panel.panel.translate_by(a, v3(0.0, body.height - body.head_l + 10.0, 0.0));
                 let h = Hood2Panels { name: format!("Hood_{tag}"), back: panel.to_other_side, bottom: panel.to_bodice, panel };
-                Ok(Collar::Hood(h, f, b))
+                Ok(Collar::Hood(h))
             }
-        }
-    }
-
-    /// The front and back neckline shapes to cut into the torso.
-    pub fn projections(&self) -> (EdgeSeq, EdgeSeq) {
-        match self {
-            Collar::NoPanels { front_proj, back_proj } => (front_proj.clone(), back_proj.clone()),
-            Collar::Turtle(_, f, b) | Collar::Lapel(_, f, b) | Collar::Hood(_, f, b) => (f.clone(), b.clone()),
         }
     }
 
     /// Interface sewn to the neckline, if the collar has panels.
     pub fn bottom(&self) -> Option<InterfaceId> {
         match self {
-            Collar::NoPanels { .. } => None,
-            Collar::Turtle(t, ..) => Some(t.bottom),
-            Collar::Lapel(l, ..) => Some(l.bottom),
-            Collar::Hood(h, ..) => Some(h.bottom),
+            Collar::NoPanels(_) => None,
+            Collar::Turtle(t) => Some(t.bottom),
+            Collar::Lapel(l) => Some(l.bottom),
+            Collar::Hood(h) => Some(h.bottom),
         }
     }
 
     /// Interface joining the centre-front seam.
     pub fn front(&self) -> Option<InterfaceId> {
         match self {
-            Collar::Turtle(t, ..) => Some(t.front_i),
+            Collar::Turtle(t) => Some(t.front_i),
             _ => None,
         }
     }
@@ -314,43 +301,10 @@ impl Collar {
     /// Interface joining the centre-back seam.
     pub fn back(&self) -> Option<InterfaceId> {
         match self {
-            Collar::Turtle(t, ..) => Some(t.back_i),
-            Collar::Lapel(l, ..) => Some(l.back_i),
-            Collar::Hood(h, ..) => Some(h.back),
-            Collar::NoPanels { .. } => None,
+            Collar::Turtle(t) => Some(t.back_i),
+            Collar::Lapel(l) => Some(l.back_i),
+            Collar::Hood(h) => Some(h.back),
+            Collar::NoPanels(_) => None,
         }
     }
-}
-
-impl Part for Collar {
-    fn node(&self) -> Node<'_> {
-        match self {
-            Collar::NoPanels { .. } => Node::Component(&NO_PANELS),
-            Collar::Turtle(t, ..) => t.node(),
-            Collar::Lapel(l, ..) => l.node(),
-            Collar::Hood(h, ..) => h.node(),
-        }
-    }
-}
-
-/// A component without parts, standing for the panel-less neckline.
-struct NoPanels;
-static NO_PANELS: NoPanels = NoPanels;
-
-impl Component for NoPanels {
-    fn name(&self) -> String {
-        "NoPanelsCollar".into()
-    }
-    fn for_each_part(&self, _f: &mut dyn FnMut(&dyn Part)) {}
-    fn stitches(&self) -> Vec<StitchRule> {
-        Vec::new()
-    }
-    fn length(&self, _a: &Arena) -> f64 {
-        0.0
-    }
-}
-
-#[allow(dead_code)]
-fn _neck_shape_used(n: NeckShape) -> NeckShape {
-    n
 }

@@ -1,7 +1,7 @@
 //! Helpers shared by the garment programs.
 
 use garmentcode::math::lerp;
-use garmentcode::{Arena, Body, InterfaceId, PanelId, Result, Vec2, Vec3};
+use garmentcode::{Body, Result, Vec2, Vec3};
 
 /// A 2D point.
 #[inline]
@@ -19,13 +19,6 @@ pub fn v3(x: f64, y: f64, z: f64) -> Vec3 {
 #[inline]
 pub fn tan_deg(deg: f64) -> f64 {
     deg.to_radians().tan()
-}
-
-/// Register named interfaces with a panel, in the reference's dictionary order.
-pub fn register(a: &mut Arena, panel: PanelId, named: &[(&str, InterfaceId)]) {
-    for (name, i) in named {
-        panel.add_interface(a, name, *i);
-    }
 }
 
 /// Waist, hip depth and back waist of a bottom garment sitting at `rise`

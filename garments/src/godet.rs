@@ -1,25 +1,39 @@
 //! Godet skirt: a base skirt with triangular inserts sewn into slits of its hem.
 
-use crate::common::{register, v2, v3};
+use crate::common::{v2, v3};
 use crate::design::{Design, GodetBase};
 use crate::skirt_paneled::{PencilSkirt, Skirt2};
 use garmentcode::math::SignumOrZero;
-use garmentcode::ops::{cut_into_edge, distribute_horizontally};
-use garmentcode::{Arena, Body, Component, EdgeId, EdgeSeq, InterfaceId, Node, PanelId, Part, PartExt, Result, StitchRule};
+use garmentcode::ops::{EdgeSide, cut_into_edge, distribute_horizontally};
+use garmentcode::slots::{Bottom, Top};
+use garmentcode::{Arena, Body, Component, EdgeId, EdgeSeq, InterfaceId, PanelId, PartExt, Result, SlotExt, StitchRule};
 
 /// A triangular insert, apex up.
-pub fn insert_panel(a: &mut Arena, id: usize, width: f64, depth: f64) -> Result<PanelId> {
-    let edges = EdgeSeq::from_points(a, &[v2(0.0, 0.0), v2(width / 2.0, depth), v2(width, 0.0)], true)?;
-    let panel = a.panel_with_edges(&format!("Insert_{id}"), edges.clone());
-    let sides = a.interface(panel, edges.slice(0, 2));
-    register(a, panel, &[("0", sides)]);
-    panel.top_center_pivot(a);
-    panel.center_x(a);
-    Ok(panel)
+#[derive(Clone, Debug, Component)]
+pub struct GodetInsert {
+    /// The panel.
+    #[panel]
+    pub panel: PanelId,
+    /// Both slanted sides, sewn into a slit.
+    #[interface]
+    pub sides: InterfaceId,
+}
+
+impl GodetInsert {
+    /// Insert `Insert_<id>`, `width` wide at the hem and `depth` high.
+    pub fn new(a: &mut Arena, id: usize, width: f64, depth: f64) -> Result<GodetInsert> {
+        let edges = EdgeSeq::from_points(a, &[v2(0.0, 0.0), v2(width / 2.0, depth), v2(width, 0.0)], true)?;
+        let panel = a.panel_with_edges(&format!("Insert_{id}"), edges.clone());
+        let sides = a.interface(panel, edges.slice(0, 2));
+        panel.top_center_pivot(a);
+        panel.center_x(a);
+        Ok(GodetInsert { panel, sides })
+    }
 }
 
 /// The base skirt of a godet skirt.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Component)]
+#[component(slots(Top, Bottom))]
 pub enum GodetBaseSkirt {
     /// Two-panel skirt.
     Skirt2(Skirt2),
@@ -27,28 +41,7 @@ pub enum GodetBaseSkirt {
     Pencil(PencilSkirt),
 }
 
-impl Part for GodetBaseSkirt {
-    fn node(&self) -> Node<'_> {
-        match self {
-            GodetBaseSkirt::Skirt2(s) => s.node(),
-            GodetBaseSkirt::Pencil(s) => s.node(),
-        }
-    }
-}
-
 impl GodetBaseSkirt {
-    fn top(&self) -> InterfaceId {
-        match self {
-            GodetBaseSkirt::Skirt2(s) => s.top,
-            GodetBaseSkirt::Pencil(s) => s.top,
-        }
-    }
-    fn bottom(&self) -> InterfaceId {
-        match self {
-            GodetBaseSkirt::Skirt2(s) => s.bottom,
-            GodetBaseSkirt::Pencil(s) => s.bottom,
-        }
-    }
     fn rise(&self) -> f64 {
         match self {
             GodetBaseSkirt::Skirt2(s) => s.rise,
@@ -66,7 +59,7 @@ pub struct GodetSkirt {
     pub base: GodetBaseSkirt,
     /// Inserts, `ins_<panel>_<i>`.
     #[part]
-    pub inserts: Vec<PanelId>,
+    pub inserts: Vec<GodetInsert>,
     /// Waist.
     #[interface]
     pub top: InterfaceId,
@@ -83,9 +76,9 @@ impl GodetSkirt {
             GodetBase::Skirt2 => GodetBaseSkirt::Skirt2(Skirt2::new(a, body, design, "", None, rise, false, true)?),
             GodetBase::PencilSkirt => GodetBaseSkirt::Pencil(PencilSkirt::new(a, body, design, None, rise, false)?),
         };
-        let bottom = base.bottom();
+        let bottom = base.iface::<Bottom>();
         let pairs: Vec<(EdgeId, PanelId)> = bottom.edges(a).iter().copied().zip(bottom.panels(a).iter().copied()).collect();
-        let mut skirt = GodetSkirt { top: base.top(), base, inserts: Vec::new(), stitches: Vec::new() };
+        let mut skirt = GodetSkirt { top: base.iface::<Top>(), base, inserts: Vec::new(), stitches: Vec::new() };
         let per_edge = g.num_inserts as f64 / pairs.len() as f64;
         for (edge, panel) in pairs {
             skirt.add_inserts(a, edge, panel, g.insert_w as f64, g.insert_depth as f64, per_edge, g.cuts_distance as f64)?;
@@ -115,10 +108,10 @@ impl GodetSkirt {
             cut_width = 1.0;
             cuts_dist = (bottom_len - cut_width * n as f64) / n as f64;
         }
-        let insert = insert_panel(a, 0, ins_w, ins_depth)?;
+        let insert = GodetInsert::new(a, 0, ins_w, ins_depth)?;
         insert.translate_by(a, v3(x_shift - n as f64 * ins_w / 2.0 + ins_w / 2.0, y_base + ins_depth, z));
         let copies = distribute_horizontally(a, insert, n, -ins_w, &format!("ins_{}", panel.name(a)));
-        self.inserts.extend(copies.iter().copied());
+        self.inserts.extend(copies.iter().cloned());
         let side_len = ((ins_w / 2.0).powi(2) + ins_depth.powi(2)).sqrt();
         let cut_depth = if side_len > cut_width / 2.0 {
             (side_len * side_len - (cut_width / 2.0).powi(2)).sqrt()
@@ -131,7 +124,8 @@ impl GodetSkirt {
         let mut edge = bottom_edge;
         for i in 0..n {
             let offset = cut_width / 2.0 + if i == 0 { cuts_dist / 2.0 } else { cuts_dist };
-            let cut = cut_into_edge(a, &shape, edge, offset, right)?;
+            let side = if right { EdgeSide::Right } else { EdgeSide::Left };
+            let cut = cut_into_edge(a, &shape, edge, offset, side)?;
             let mut loop_edges = std::mem::take(panel.edges_mut(a));
             let res = loop_edges.substitute(edge, &cut.edges);
             *panel.edges_mut(a) = loop_edges;
@@ -141,9 +135,8 @@ impl GodetSkirt {
             if right {
                 cut_i = cut_i.reverse(a, false);
             }
-            let insert = if right { copies[n - 1 - i] } else { copies[i] };
-            let sides = insert.interface(a, "0").expect("registered");
-            self.stitches.push(StitchRule::new(a, sides, cut_i)?);
+            let insert = if right { &copies[n - 1 - i] } else { &copies[i] };
+            self.stitches.push(StitchRule::new(a, insert.sides, cut_i)?);
         }
         Ok(())
     }

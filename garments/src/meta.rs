@@ -10,51 +10,41 @@ use crate::pants::Pants;
 use crate::skirt_levels::SkirtLevels;
 use crate::skirt_paneled::{PencilSkirt, Skirt2, SkirtManyPanels};
 use garmentcode::slots::{Bottom, Top};
-use garmentcode::{Align, Arena, Body, Component, InterfaceId, Part, PartExt, Result, Slot, SlotExt, StitchRule};
+use garmentcode::{Align, Arena, Body, Component, InterfaceId, PartExt, Result, SlotExt, StitchRule};
 
-/// An upper garment: exposes a `bottom` to hang a waistband or a bottom garment on.
-pub trait UpperGarment: Part + Slot<Bottom> {}
-impl UpperGarment for Shirt {}
+/// The bottom garment of a design: one of the library's skirts or the pants. Each
+/// exposes a `top` to sew to the waist.
+#[derive(Component)]
+#[component(slots(Top))]
+pub enum BottomGarment {
+    /// Circle skirt (also the asymmetric one).
+    Circle(SkirtCircle),
+    /// Two-panel skirt.
+    Skirt2(Skirt2),
+    /// Pencil skirt.
+    Pencil(PencilSkirt),
+    /// Many-panel skirt.
+    ManyPanels(SkirtManyPanels),
+    /// Skirt with godets.
+    Godet(GodetSkirt),
+    /// Pants.
+    Pants(Pants),
+    /// Tiered skirt.
+    Levels(SkirtLevels),
+}
 
-/// A bottom garment: exposes a `top` to sew to the waist and knows its rise.
-pub trait BottomGarment: Part + Slot<Top> {
+impl BottomGarment {
     /// How high the garment sits (1 = natural waist).
-    fn rise(&self) -> f64;
-}
-
-impl BottomGarment for SkirtCircle {
-    fn rise(&self) -> f64 {
-        self.rise
-    }
-}
-impl BottomGarment for Skirt2 {
-    fn rise(&self) -> f64 {
-        self.rise
-    }
-}
-impl BottomGarment for PencilSkirt {
-    fn rise(&self) -> f64 {
-        self.rise
-    }
-}
-impl BottomGarment for SkirtManyPanels {
-    fn rise(&self) -> f64 {
-        self.rise
-    }
-}
-impl BottomGarment for GodetSkirt {
-    fn rise(&self) -> f64 {
-        GodetSkirt::rise(self)
-    }
-}
-impl BottomGarment for Pants {
-    fn rise(&self) -> f64 {
-        Pants::rise(self)
-    }
-}
-impl BottomGarment for SkirtLevels {
-    fn rise(&self) -> f64 {
-        self.rise
+    pub fn rise(&self) -> f64 {
+        match self {
+            BottomGarment::Circle(s) => s.rise,
+            BottomGarment::Skirt2(s) => s.rise,
+            BottomGarment::Pencil(s) => s.rise,
+            BottomGarment::ManyPanels(s) => s.rise,
+            BottomGarment::Godet(s) => s.rise(),
+            BottomGarment::Pants(p) => p.rise(),
+            BottomGarment::Levels(s) => s.rise,
+        }
     }
 }
 
@@ -64,13 +54,13 @@ impl BottomGarment for SkirtLevels {
 pub struct MetaGarment {
     /// Upper garment.
     #[part]
-    pub upper: Option<Box<dyn UpperGarment>>,
+    pub upper: Option<Shirt>,
     /// Waistband.
     #[part]
     pub belt: Option<Waistband>,
     /// Bottom garment.
     #[part]
-    pub lower: Option<Box<dyn BottomGarment>>,
+    pub lower: Option<BottomGarment>,
     /// Upper to band to bottom.
     #[stitches]
     pub stitches: Vec<StitchRule>,
@@ -80,17 +70,17 @@ impl MetaGarment {
     /// Build the garment a design describes on a body.
     pub fn new(a: &mut Arena, body: &Body, design: &Design) -> Result<MetaGarment> {
         let meta = &design.meta;
-        let upper: Option<Box<dyn UpperGarment>> = match meta.upper {
+        let upper = match meta.upper {
             None => None,
             Some(kind) => {
                 let s = Shirt::new(a, body, design, kind == UpperKind::FittedShirt)?;
                 s.set_panel_label(a, "body", false);
-                Some(Box::new(s))
+                Some(s)
             }
         };
         // A fitted top forces the bottom to sit at the natural waist.
         let forced_rise = if meta.upper == Some(UpperKind::FittedShirt) { Some(1.0) } else { None };
-        let lower: Option<Box<dyn BottomGarment>> = match meta.bottom {
+        let lower = match meta.bottom {
             None => None,
             Some(kind) => Some(build_bottom(a, body, design, kind, forced_rise)?),
         };
@@ -131,16 +121,16 @@ impl MetaGarment {
     }
 }
 
-fn build_bottom(a: &mut Arena, body: &Body, design: &Design, kind: BottomKind, rise: Option<f64>) -> Result<Box<dyn BottomGarment>> {
+fn build_bottom(a: &mut Arena, body: &Body, design: &Design, kind: BottomKind, rise: Option<f64>) -> Result<BottomGarment> {
     Ok(match kind {
-        BottomKind::SkirtCircle => Box::new(SkirtCircle::new(a, body, design, "", None, rise, true, false)?),
-        BottomKind::AsymmSkirtCircle => Box::new(SkirtCircle::new(a, body, design, "", None, rise, true, true)?),
-        BottomKind::GodetSkirt => Box::new(GodetSkirt::new(a, body, design, rise)?),
-        BottomKind::Pants => Box::new(Pants::new(a, body, design, rise)?),
-        BottomKind::Skirt2 => Box::new(Skirt2::new(a, body, design, "", None, rise, true, true)?),
-        BottomKind::SkirtManyPanels => Box::new(SkirtManyPanels::new(a, body, design, rise)?),
-        BottomKind::PencilSkirt => Box::new(PencilSkirt::new(a, body, design, None, rise, true)?),
-        BottomKind::SkirtLevels => Box::new(SkirtLevels::new(a, body, design, rise)?),
+        BottomKind::SkirtCircle => SkirtCircle::new(a, body, design, "", None, rise, true, false)?.into(),
+        BottomKind::AsymmSkirtCircle => SkirtCircle::new(a, body, design, "", None, rise, true, true)?.into(),
+        BottomKind::GodetSkirt => GodetSkirt::new(a, body, design, rise)?.into(),
+        BottomKind::Pants => Pants::new(a, body, design, rise)?.into(),
+        BottomKind::Skirt2 => Skirt2::new(a, body, design, "", None, rise, true, true)?.into(),
+        BottomKind::SkirtManyPanels => SkirtManyPanels::new(a, body, design, rise)?.into(),
+        BottomKind::PencilSkirt => PencilSkirt::new(a, body, design, None, rise, true)?.into(),
+        BottomKind::SkirtLevels => SkirtLevels::new(a, body, design, rise)?.into(),
     })
 }
 

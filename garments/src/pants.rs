@@ -1,11 +1,14 @@
 //! Trousers: leg panels with a crotch curve and waist darts, optional cuffs.
 
 use crate::bands::{Cuff, CuffParams};
-use crate::common::{eval_rise, register, v2, v3};
+use crate::common::{eval_rise, v2, v3};
 use crate::design::Design;
 use crate::skirt_paneled::{add_darts, tangent_curve};
 use garmentcode::math::close_enough;
-use garmentcode::{Align, Arena, Body, Component, Curve, EdgeSeq, Gather, InterfaceId, PanelId, PartExt, Result, StitchRule, Vec3};
+use garmentcode::slots::Top;
+use garmentcode::{
+    Align, Arena, Body, Component, Curve, EdgeSeq, Gather, InterfaceId, PanelId, PartExt, Result, SlotExt, StitchRule, Vec3,
+};
 
 /// Front or back half of one trouser leg.
 #[derive(Clone, Debug, Component)]
@@ -94,7 +97,6 @@ impl PantPanel {
         let crotch = a.interface(panel, EdgeSeq(vec![crotch_top, crotch_bottom]));
         let inside = a.interface(panel, left);
         let bottom_i = a.interface(panel, bottom);
-        register(a, panel, &[("outside", outside), ("crotch", crotch), ("inside", inside), ("bottom", bottom_i)]);
         let ruffle = s.match_top_int_to.map(|m| s.waist / m).unwrap_or(1.0);
         let top_i = if w_diff > hw_shift {
             let (top_edges, int_edges) = add_darts(a, panel, top, w_diff - hw_shift, dart_depth, s.dart_position, s.double_dart, false)?;
@@ -106,7 +108,6 @@ impl PantPanel {
         } else {
             a.interface_gathered(panel, top, ruffle)?
         };
-        register(a, panel, &[("top", top_i)]);
         Ok(PantPanel { panel, outside, crotch, inside, bottom: bottom_i, top: top_i })
     }
 }
@@ -218,8 +219,8 @@ impl PantsHalf {
                     skirt_ruffle: d.cuff.skirt_ruffle,
                 };
                 let cuff = Cuff::new(a, kind, &format!("pant_{tag}"), &params)?;
-                cuff.place_by_interface(a, cuff.top(), pant_bottom, 5.0, Align::Left);
-                stitches.push(StitchRule::new(a, pant_bottom, cuff.top())?);
+                cuff.place_by_interface(a, cuff.iface::<Top>(), pant_bottom, 5.0, Align::Left);
+                stitches.push(StitchRule::new(a, pant_bottom, cuff.iface::<Top>())?);
                 Some(cuff)
             }
         };

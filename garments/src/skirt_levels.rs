@@ -4,10 +4,12 @@
 use crate::circle_skirt::SkirtCircle;
 use crate::design::{Design, LevelKind, LevelsBase};
 use crate::skirt_paneled::{PencilSkirt, Skirt2};
-use garmentcode::{Align, Arena, Body, Component, InterfaceId, Node, Part, PartExt, Result, Rotation, StitchRule};
+use garmentcode::slots::{Bottom, BottomB, Top};
+use garmentcode::{Align, Arena, Body, Component, InterfaceId, PartExt, Result, Rotation, SlotExt, StitchRule};
 
 /// A skirt that can carry another skirt below it.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Component)]
+#[component(slots(Top, Bottom, BottomB))]
 pub enum Stackable {
     /// Two-panel skirt.
     Skirt2(Skirt2),
@@ -15,43 +17,6 @@ pub enum Stackable {
     Pencil(PencilSkirt),
     /// Circle skirt.
     Circle(SkirtCircle),
-}
-
-impl Part for Stackable {
-    fn node(&self) -> Node<'_> {
-        match self {
-            Stackable::Skirt2(s) => s.node(),
-            Stackable::Pencil(s) => s.node(),
-            Stackable::Circle(s) => s.node(),
-        }
-    }
-}
-
-impl Stackable {
-    /// Waist.
-    pub fn top(&self) -> InterfaceId {
-        match self {
-            Stackable::Skirt2(s) => s.top,
-            Stackable::Pencil(s) => s.top,
-            Stackable::Circle(s) => s.top,
-        }
-    }
-    /// Hem.
-    pub fn bottom(&self) -> InterfaceId {
-        match self {
-            Stackable::Skirt2(s) => s.bottom,
-            Stackable::Pencil(s) => s.bottom,
-            Stackable::Circle(s) => s.bottom,
-        }
-    }
-    /// Back hem.
-    pub fn bottom_b(&self) -> InterfaceId {
-        match self {
-            Stackable::Skirt2(s) => s.bottom_b,
-            Stackable::Pencil(s) => s.bottom_b,
-            Stackable::Circle(s) => s.bottom_b,
-        }
-    }
 }
 
 /// Tiered skirt.
@@ -99,8 +64,8 @@ impl SkirtLevels {
         let ruffle = l.level_ruffle;
         for i in 0..l.num_levels {
             let prev = tiers.last().expect("base");
-            lbody.waist = ruffle * prev.bottom().length(a);
-            lbody.waist_back_width = ruffle * prev.bottom_b().length(a);
+            lbody.waist = ruffle * prev.iface::<Bottom>().length(a);
+            lbody.waist_back_width = ruffle * prev.iface::<BottomB>().length(a);
             let tag = i.to_string();
             // QUIRK: a tier takes its own `rise` parameter with the overwritten waist.
             let level = match l.level {
@@ -113,11 +78,11 @@ impl SkirtLevels {
                 }
             };
             level.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, -angle]));
-            let prev_bottom = tiers.last().expect("base").bottom();
-            level.place_by_interface(a, level.top(), prev_bottom, 5.0, Align::Center);
-            stitches.push(StitchRule::new(a, prev_bottom, level.top())?);
+            let prev_bottom = tiers.last().expect("base").iface::<Bottom>();
+            level.place_by_interface(a, level.iface::<Top>(), prev_bottom, 5.0, Align::Center);
+            stitches.push(StitchRule::new(a, prev_bottom, level.iface::<Top>())?);
             tiers.push(level);
         }
-        Ok(SkirtLevels { top: tiers[0].top(), tiers, stitches, rise })
+        Ok(SkirtLevels { top: tiers[0].iface::<Top>(), tiers, stitches, rise })
     }
 }

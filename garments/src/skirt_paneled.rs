@@ -1,12 +1,12 @@
 //! Paneled skirts: the two-panel skirt, the many-gore skirt and the fitted pencil
 //! skirt with darts, slits and decorative side cuts.
 
-use crate::common::{eval_rise, register, tan_deg, v2, v3};
+use crate::common::{eval_rise, tan_deg, v2, v3};
 use crate::design::{Design, SideCut};
 use crate::shapes;
 use garmentcode::curves::quadratic_from_tangents;
 use garmentcode::math::close_enough;
-use garmentcode::ops::{DartSize, cut_into_edge, cut_many_into_edge, dart_shape, distribute_y, side_with_cut};
+use garmentcode::ops::{Cut, DartSize, EdgeSide, ShapeOrder, cut_into_edge, cut_many_into_edge, dart_shape, distribute_y, side_with_cut};
 use garmentcode::{
     Arena, Body, Component, Curve, EdgeId, EdgeSeq, Gather, InterfaceId, PanelId, Result, Rotation, StitchRule, Vec2, Vec3, VertexId,
 };
@@ -15,8 +15,8 @@ use std::f64::consts::PI;
 /// A quadratic edge between two vertices with end tangents fitted as the reference's
 /// `curve_from_tangents` does.
 pub(crate) fn tangent_curve(a: &mut Arena, s: VertexId, e: VertexId, t0: Option<Vec2>, t1: Option<Vec2>, guess: Vec2) -> Result<EdgeId> {
-    let cp = quadratic_from_tangents(a.pos(s), a.pos(e), t0, t1, guess);
-    a.edge(s, e, Curve::Quadratic(cp))
+    let curve = quadratic_from_tangents(a.pos(s), a.pos(e), t0, t1, guess);
+    a.edge(s, e, curve)
 }
 
 /// One panel of a two-panel skirt: a trapezoid with an optionally gathered waist and
@@ -84,7 +84,6 @@ impl SkirtPanel {
         let top = a.interface_gathered(panel, waist, ruffle)?.reverse(a, true);
         let l = a.interface(panel, left[0]);
         let b = a.interface(panel, bottom);
-        register(a, panel, &[("right", r), ("top", top), ("left", l), ("bottom", b)]);
         panel.top_center_pivot(a);
         panel.center_x(a);
         Ok(SkirtPanel { panel, right: r, top, left: l, bottom: b })
@@ -97,6 +96,18 @@ pub struct ThinSkirtPanel {
     /// The panel.
     #[panel]
     pub panel: PanelId,
+    /// Side towards the previous gore.
+    #[interface]
+    pub right: InterfaceId,
+    /// Waist.
+    #[interface]
+    pub top: InterfaceId,
+    /// Side towards the next gore.
+    #[interface]
+    pub left: InterfaceId,
+    /// Hem.
+    #[interface]
+    pub bottom: InterfaceId,
 }
 
 impl ThinSkirtPanel {
@@ -113,7 +124,7 @@ impl ThinSkirtPanel {
         } else {
             let (s, e) = (a.end(edges.last_edge()), a.start(edges[0]));
             let through = garmentcode::math::rel_to_abs(a.pos(s), a.pos(e), v2(0.5, b_curvature));
-            let cy = garmentcode::arc::cy_from_three_points(a.pos(s), a.pos(e), through);
+            let cy = garmentcode::curves::cy_from_three_points(a.pos(s), a.pos(e), through);
             edges.push(a.edge(s, e, Curve::Arc { cy })?);
         }
         let panel = a.panel_with_edges(name, edges.clone());
@@ -123,8 +134,7 @@ impl ThinSkirtPanel {
         let top = a.interface(panel, edges[1]);
         let left = a.interface(panel, edges[2]);
         let bottom = a.interface(panel, edges.last_edge());
-        register(a, panel, &[("right", right), ("top", top), ("left", left), ("bottom", bottom)]);
-        Ok(ThinSkirtPanel { panel })
+        Ok(ThinSkirtPanel { panel, right, top, left, bottom })
     }
 }
 
@@ -156,8 +166,8 @@ pub struct FittedPanelSpec<'s> {
     pub right_slit: f64,
     /// Decorative side cut shapes.
     pub side_cut: Option<&'s SideCutShape>,
-    /// Mirror the side cut.
-    pub flip_side_cut: bool,
+    /// The side cut as drawn or mirrored.
+    pub side_cut_order: ShapeOrder,
 }
 
 /// A decorative cut: one chain, or several chains drawn in one frame.
@@ -236,7 +246,7 @@ impl FittedSkirtPanel {
         if s.slit != 0.0 {
             let shape = dart_shape(a, 2.0, DartSize::Depth(s.slit * s.length))?;
             let len = a.edge_length(hem);
-            let cut = cut_into_edge(a, &shape, hem, len / 2.0, true)?;
+            let cut = cut_into_edge(a, &shape, hem, len / 2.0, EdgeSide::Right)?;
             edges.substitute(hem, &cut.edges)?;
             bottom = cut.leftovers;
         }
@@ -259,8 +269,8 @@ impl FittedSkirtPanel {
             // QUIRK: any failure to fit the decorative cut silently skips it.
             let len = a.edge_length(left_bottom);
             let cut = match shape {
-                SideCutShape::Single(seq) => cut_into_edge(a, seq, left_bottom, len / 2.0, true),
-                SideCutShape::Many(seqs) => cut_many_into_edge(a, seqs, left_bottom, len / 2.0, true, s.flip_side_cut),
+                SideCutShape::Single(seq) => cut_into_edge(a, seq, left_bottom, len / 2.0, EdgeSide::Right),
+                SideCutShape::Many(seqs) => cut_many_into_edge(a, seqs, left_bottom, len / 2.0, EdgeSide::Right, s.side_cut_order),
             };
             if let Ok(cut) = cut {
                 edges.substitute(left_bottom, &cut.edges)?;
@@ -280,7 +290,6 @@ impl FittedSkirtPanel {
         set_flip(a, left_i, 0);
         let last = right.len() - 1;
         set_flip(a, right_i, last);
-        register(a, panel, &[("bottom", bottom_i), ("right", right_i), ("left", left_i)]);
         let top_i = if w_diff > hw_shift {
             let (top_edges, int_edges) = add_darts(a, panel, top, w_diff - hw_shift, dart_depth, s.dart_position, s.double_dart, true)?;
             let ruffle = s.match_top_int_to.map(|m| int_edges.length(a) / m).unwrap_or(1.0);
@@ -293,7 +302,6 @@ impl FittedSkirtPanel {
             let ruffle = s.match_top_int_to.map(|m| a.edge_length(top) / m).unwrap_or(1.0);
             a.interface_gathered(panel, top, ruffle)?
         };
-        register(a, panel, &[("top", top_i)]);
         Ok(FittedSkirtPanel { panel, bottom: bottom_i, right: right_i, left: left_i, top: top_i })
     }
 }
@@ -350,7 +358,7 @@ pub(crate) fn add_darts(
         let last = top_edges.last_edge();
         let left_len = a.edge_length(last);
         let offset = if from_middle { (left_len - top_len / 2.0) + off } else { left_len + off };
-        let (new_edges, leftovers) = panel.add_dart(a, dart, last, offset, true)?;
+        let Cut { edges: new_edges, leftovers, .. } = panel.add_dart(a, dart, last, offset, EdgeSide::Right)?;
         top_edges.substitute(last, &new_edges)?;
         int_edges.substitute(last, &leftovers)?;
     }
@@ -442,7 +450,7 @@ impl PencilSkirt {
                 left_slit: pick(d.left_slit),
                 right_slit: pick(d.right_slit),
                 side_cut: shape_l.as_ref(),
-                flip_side_cut: false,
+                side_cut_order: ShapeOrder::AsDrawn,
             },
         )?;
         front.panel.translate_to(a, v3(0.0, waist_level, 25.0));
@@ -465,7 +473,7 @@ impl PencilSkirt {
                 left_slit: pick(d.left_slit),
                 right_slit: pick(d.right_slit),
                 side_cut: shape_r.as_ref(),
-                flip_side_cut: false,
+                side_cut_order: ShapeOrder::AsDrawn,
             },
         )?;
         back.panel.translate_to(a, v3(0.0, waist_level, -20.0));
@@ -593,7 +601,7 @@ impl Skirt2 {
 pub struct SkirtManyPanels {
     /// The gores, `skirt_panel_0..n`.
     #[part]
-    pub panels: Vec<PanelId>,
+    pub panels: Vec<ThinSkirtPanel>,
     /// Waist.
     #[interface]
     pub top: InterfaceId,
@@ -616,27 +624,23 @@ impl SkirtManyPanels {
         let panel_w = waist / n as f64;
         let front = ThinSkirtPanel::new(a, "front", panel_w, panel_w * flare_coeff_pi, length, d.skirt_many_panels.panel_curve)?;
         let p = front.panel;
-        let bottom = p.interface(a, "bottom").expect("registered");
-        let dist = bottom.length(a) / (2.0 * (PI / n as f64).tan());
+        let dist = front.bottom.length(a) / (2.0 * (PI / n as f64).tan());
         p.translate_to(a, v3(-dist, body.derived().waist_level, 0.0));
         p.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, -90.0, 0.0]));
         p.rotate_align(a, v3(-dist, 0.0, panel_w / 2.0));
-        p.interface(a, "top").expect("registered").reverse(a, true);
-        let panels = distribute_y(a, p, n, "skirt_panel");
-        let iface = |a: &Arena, p: PanelId, name: &str| p.interface(a, name).expect("registered");
+        front.top.reverse(a, true);
+        let panels = distribute_y(a, front, n, "skirt_panel");
         let mut stitches = Vec::with_capacity(n);
         for i in 1..n {
-            let (l, r) = (iface(a, panels[i - 1], "left"), iface(a, panels[i], "right"));
-            stitches.push(StitchRule::new(a, l, r)?);
+            stitches.push(StitchRule::new(a, panels[i - 1].left, panels[i].right)?);
         }
-        let (l, r) = (iface(a, panels[n - 1], "left"), iface(a, panels[0], "right"));
-        stitches.push(StitchRule::new(a, l, r)?);
-        let tops: Vec<InterfaceId> = panels.iter().map(|p| iface(a, *p, "top")).collect();
+        stitches.push(StitchRule::new(a, panels[n - 1].left, panels[0].right)?);
+        let tops: Vec<InterfaceId> = panels.iter().map(|p| p.top).collect();
         let top = a.interface_from(&tops);
         Ok(SkirtManyPanels { panels, top, stitches, rise })
     }
 
     fn skirt_length(&self, a: &Arena) -> f64 {
-        self.panels[0].length(a)
+        self.panels[0].panel.length(a)
     }
 }

@@ -3,12 +3,15 @@
 
 use crate::bands::{Cuff, CuffParams};
 use crate::bodice::SleeveParams;
-use crate::common::{register, v2, v3};
+use crate::common::{v2, v3};
 use crate::design::ArmholeShape;
 use crate::shapes;
 use garmentcode::math::close_enough;
 use garmentcode::ops::even_armhole_openings;
-use garmentcode::{Align, Arena, Body, Component, Curve, EdgeSeq, InterfaceId, PanelId, PartExt, Result, Rotation, StitchRule, Vec2};
+use garmentcode::slots::{Bottom, Top};
+use garmentcode::{
+    Align, Arena, Body, Component, Curve, EdgeSeq, InterfaceId, PanelId, PartExt, Result, Rotation, SlotExt, StitchRule, Vec2,
+};
 
 /// Front or back half of a sleeve: cuff edge at x = 0, underarm seam below, the
 /// sleeve opening at the far end, shoulder seam on top.
@@ -74,7 +77,6 @@ impl SleevePanel {
         let out = a.interface_gathered(panel, edges[0], s.cuff_top_ruffle)?;
         let top = if standing { a.interface(panel, edges.slice(-2, edges.len() as isize)) } else { a.interface(panel, edges.last_edge()) };
         let bottom = a.interface(panel, edges[1]);
-        register(a, panel, &[("in", in_), ("out", out), ("top", top), ("bottom", bottom)]);
         panel.set_length_interface(a, bottom);
         let pivot = a.pos(a.start(edges.last_edge()));
         panel.set_pivot(a, pivot, false);
@@ -201,9 +203,9 @@ impl Sleeve {
             };
             let cuff = Cuff::new(a, kind, &format!("sl_{tag}"), &params)?;
             cuff.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, -90.0]));
-            cuff.place_by_interface(a, cuff.top(), out, 2.0, Align::Top);
-            self.stitches.push(StitchRule::new(a, cuff.top(), out)?);
-            out = cuff.bottom();
+            cuff.place_by_interface(a, cuff.iface::<Top>(), out, 2.0, Align::Top);
+            self.stitches.push(StitchRule::new(a, cuff.iface::<Top>(), out)?);
+            out = cuff.iface::<Bottom>();
             self.cuff = Some(cuff);
         }
         self.out = Some(out);

@@ -4,7 +4,7 @@ use crate::cli::BuildArgs;
 use crate::commands::{CliError, load_body, load_design, user_warning, write_folder};
 use crate::output::OutputSet;
 use garmentcode::Params;
-use garmentcode::params::write_design;
+use garmentcode::io::write_design;
 use garments::Design;
 use garments::build::build;
 

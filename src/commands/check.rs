@@ -2,7 +2,7 @@
 
 use crate::cli::{CheckArgs, CheckFormat};
 use crate::commands::{CliError, read_pattern};
-use garmentcode::pattern::{Problem, ProblemKind, Severity, validate};
+use garmentcode::{Problem, ProblemKind, Severity, validate};
 use serde_json::json;
 
 /// Whether `build --strict` rejects a pattern with this warning. Stitched edges of

@@ -3,7 +3,7 @@
 
 use crate::cli::CompareArgs;
 use crate::commands::CliError;
-use garmentcode::compare::{self, CompareOptions};
+use garmentcode_compare::{self as compare, CompareOptions};
 
 /// Printed once when a report mentions chaotic panels.
 const CHAOTIC_NOTE: &str = "note: \"chaotic panels\" are sleeve, cuff and hood panels, whose curves the reference fits with a numerically \

@@ -83,7 +83,7 @@ pub fn load_design(arg: &str) -> Result<(garments::Design, String), CliError> {
         )));
     }
     let text = std::fs::read_to_string(arg).map_err(|e| CliError::Input(format!("{arg}: cannot read: {e}")))?;
-    let d = garmentcode::params::read_design(&text, arg, &garments::Design::design_space()).map_err(|e| CliError::Input(e.to_string()))?;
+    let d = garmentcode::io::read_design(&text, arg, &garments::Design::design_space()).map_err(|e| CliError::Input(e.to_string()))?;
     let stem = Path::new(arg).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "design".into());
     Ok((d, stem))
 }

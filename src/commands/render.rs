@@ -4,7 +4,7 @@
 use crate::cli::RenderArgs;
 use crate::commands::{CliError, read_pattern, write_folder};
 use crate::output::OutputSet;
-use garmentcode::pattern::{Severity, validate};
+use garmentcode::{Severity, validate};
 
 pub fn run(args: RenderArgs) -> Result<i32, CliError> {
     let file = &args.file;

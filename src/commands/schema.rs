@@ -3,7 +3,7 @@
 use crate::cli::{SchemaArgs, SchemaFormat};
 use crate::commands::CliError;
 use garmentcode::Params;
-use garmentcode::params::write_design;
+use garmentcode::io::write_design;
 use garments::Design;
 
 pub fn run(args: SchemaArgs) -> Result<i32, CliError> {

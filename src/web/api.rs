@@ -19,8 +19,8 @@
 use std::cell::RefCell;
 use std::sync::OnceLock;
 
-use garmentcode::params::{DesignError, Kind, ParamSpec, Range, Value as PValue, from_values, read_design_values, write_design};
-use garmentcode::{Arena, Body, DesignSpace, Params};
+use garmentcode::io::{DesignError, from_values, read_design_values, write_design};
+use garmentcode::{Arena, Body, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue};
 use garments::Design;
 use garments::sample::{DatasetSampler, NamedBody, Outcome};
 use serde_json::{Map, Value as Json, json};
@@ -482,7 +482,7 @@ pub fn schema() -> Json {
             json!({ "name": n, "description": description })
         })
         .collect();
-    let measurements: Vec<Json> = garmentcode::body::MEASUREMENTS
+    let measurements: Vec<Json> = garmentcode::MEASUREMENTS
         .iter()
         .map(|m| {
             json!({
@@ -495,8 +495,7 @@ pub fn schema() -> Json {
             })
         })
         .collect();
-    let derived: Vec<Json> =
-        garmentcode::body::DERIVED_VALUES.iter().map(|d| json!({ "name": d.name, "description": d.description })).collect();
+    let derived: Vec<Json> = garmentcode::DERIVED_VALUES.iter().map(|d| json!({ "name": d.name, "description": d.description })).collect();
     json!({
         "groups": groups,
         "params": params,

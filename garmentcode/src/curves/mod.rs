@@ -2,12 +2,14 @@
 //! `curve_from_tangents`), a quadratic through a prescribed extremum, and the cubic
 //! re-fit to end tangents at a fixed length that inverts sleeve openings.
 
-pub mod bfgs;
 pub mod inversion;
 
+pub use crate::arc::{cy_from_angle, cy_from_radius, cy_from_three_points, is_large, midpoint, rel_radius, svg_arc, sweep_angle};
+use crate::bezier::Bezier;
+use crate::edge::{Curve, Edge};
 use crate::math::{Vec2, abs_to_rel_vector, norm};
 
-/// Relative control point of the quadratic from `start` to `end` whose end tangents
+/// The quadratic from `start` to `end` (its relative control point) whose end tangents
 /// follow `tan0` (at the start) and/or `tan1` (at the end), found from `initial` as
 /// the reference finds it (scipy's BFGS on the tangent misfit). With one tangent
 /// every point of a ray fits exactly; the optimiser's path decides which one, so
@@ -15,7 +17,7 @@ use crate::math::{Vec2, abs_to_rel_vector, norm};
 ///
 /// Fits are memoised per thread until the arena is cleared, like
 /// [`match_tangents`]: the result is a pure function of the inputs' bits.
-pub fn quadratic_from_tangents(start: Vec2, end: Vec2, tan0: Option<Vec2>, tan1: Option<Vec2>, initial: Vec2) -> Vec2 {
+pub fn quadratic_from_tangents(start: Vec2, end: Vec2, tan0: Option<Vec2>, tan1: Option<Vec2>, initial: Vec2) -> Curve {
     let rel = |t: Vec2| {
         let r = abs_to_rel_vector(start, end, t);
         let n = norm(r);
@@ -26,29 +28,37 @@ pub fn quadratic_from_tangents(start: Vec2, end: Vec2, tan0: Option<Vec2>, tan1:
     let [t0x, t0y] = t0.unwrap_or_default().map(f64::to_bits);
     let [t1x, t1y] = t1.unwrap_or_default().map(f64::to_bits);
     let key = [given, t0x, t0y, t1x, t1y, initial.x.to_bits(), initial.y.to_bits()];
-    let cp = crate::memo::tangent_fit(key, || bfgs::fit_quadratic_tangents(t0, t1, [initial.x, initial.y]));
-    Vec2::new(cp[0], cp[1])
+    let cp = crate::memo::tangent_fit(key, || crate::parity::bfgs::fit_quadratic_tangents(t0, t1, [initial.x, initial.y]));
+    Curve::Quadratic(Vec2::new(cp[0], cp[1]))
 }
 
-/// Relative control point of the quadratic from (0,0) to (1,0) in the edge frame
+/// The quadratic (its relative control point in the edge frame, from (0,0) to (1,0))
 /// whose extremum (the point farthest from the chord) is the relative point `p`:
 /// `B(½) = p` with the control point straight above the chord midpoint, i.e.
 /// control `(p.x·2 − ½, 2·p.y)` when `p.x = ½`; in general the control point is
 /// found so that the curve's y-extremum lies at `p`.
-pub fn quadratic_with_extremum(p: Vec2) -> Option<Vec2> {
+pub fn quadratic_with_extremum(p: Vec2) -> Option<Curve> {
     // For B(t) = 2t(1−t)c + t²(1,0): y(t) = 2t(1−t)c_y has its extremum at t = ½
     // with value c_y/2, where x(½) = c_x/2 + ¼. So c = (2(p_x − ¼), 2 p_y).
     if !(0.0..=1.0).contains(&p.x) || p.y == 0.0 {
         return None;
     }
-    Some(Vec2::new(2.0 * (p.x - 0.25), 2.0 * p.y))
+    Some(Curve::Quadratic(Vec2::new(2.0 * (p.x - 0.25), 2.0 * p.y)))
 }
 
-/// Cubic control points re-fitted to end tangents `t0`, `t1` at length
-/// `target_len`, the start fixed and the end moved along the initial chord: the
-/// sleeve-opening and hood inversion (the reference's `curve_match_tangents`),
-/// minimising the reference's own objective deterministically (see [`inversion`]).
-pub fn match_tangents(cps: [Vec2; 4], t0: Vec2, t1: Vec2, target_len: f64) -> [Vec2; 4] {
-    let p = cps.map(|v| [v.x, v.y]);
-    inversion::match_tangents(p, [t0.x, t0.y], [t1.x, t1.y], target_len).map(|q| Vec2::new(q[0], q[1]))
+/// The cubic `edge` re-fitted to end tangents `t0`, `t1` at length `target_len`,
+/// its start fixed and its end moved along the initial chord: the sleeve-opening
+/// and hood inversion (the reference's `curve_match_tangents`), minimising the
+/// reference's own objective deterministically (see [`inversion`]). A line or
+/// quadratic edge is first raised to the cubic of the same shape.
+pub fn match_tangents(edge: &Edge, t0: Vec2, t1: Vec2, target_len: f64) -> Edge {
+    let (s, e) = (edge.start, edge.end);
+    let [c1, c2] = match edge.abs_controls()[..] {
+        [c1, c2] => [c1, c2],
+        [q] => [s + (q - s) * (2.0 / 3.0), e + (q - e) * (2.0 / 3.0)],
+        _ => [s + (e - s) / 3.0, s + (e - s) * (2.0 / 3.0)],
+    };
+    let p = [s, c1, c2, e].map(|v| [v.x, v.y]);
+    let fitted = inversion::match_tangents(p, [t0.x, t0.y], [t1.x, t1.y], target_len).map(|q| Vec2::new(q[0], q[1]));
+    Edge::from_bezier(&Bezier::Cubic(fitted))
 }

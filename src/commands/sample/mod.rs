@@ -19,7 +19,7 @@ mod summary;
 use crate::cli::SampleArgs;
 use crate::commands::CliError;
 use crate::output::OutputSet;
-use garmentcode::params::write_design;
+use garmentcode::io::write_design;
 use garmentcode::{Arena, Params};
 use garments::Design;
 use garments::sample::{DatasetSampler, MAX_ATTEMPTS, NamedBody, Outcome, sample_name};

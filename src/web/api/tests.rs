@@ -305,15 +305,15 @@ fn extreme_bodies_are_answered_not_panicked() {
     }
 }
 
-fn sampler() -> garmentcode::params::Sampler {
-    garmentcode::params::Sampler::new(space().clone())
+fn sampler() -> garmentcode::Sampler {
+    garmentcode::Sampler::new(space().clone())
 }
 
 #[test]
 fn random_designs_on_every_body_never_break_the_api() {
     let bodies: Vec<&str> = garments::builtin::BODIES.iter().map(|(n, _)| *n).collect();
     for i in 0..40u64 {
-        let values = sampler().sample_values(&mut garmentcode::params::sample_rng(99, i));
+        let values = sampler().sample_values(&mut garmentcode::sample_rng(99, i));
         let (status, r) = post("/api/pattern", json!({ "design": values_json(&values), "body": bodies[i as usize % bodies.len()] }));
         assert_eq!(status, 200, "{r}");
         if r["ok"] == true {
