@@ -102,6 +102,8 @@ pub use garmentcode_derive::{Choice, Component, Params, component};
 pub mod __private {
     pub use crate::arena::{Arena, InterfaceId, PanelId, StitchRule};
     pub use crate::component::{Component, Interfaces, Node, PanelPart, Part, Parts, Slot};
+    pub use crate::params::overrides::{Override, OverrideNumber, OverrideProblem, apply_overrides, override_number, override_problem};
+    pub use crate::params::spec::{FieldInfo, FieldShape};
     pub use crate::params::spec::{Kind, ParamSpec, Range, Value};
     pub use crate::params::{Choice, ParamValue, Params, join_path};
     pub use crate::remap::{IdMap, Remap};

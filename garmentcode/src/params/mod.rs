@@ -13,14 +13,21 @@
 //!   naming the file, parameter path, bad value and allowed range;
 //! - [`Sampler`]: the reference's sampling semantics on a named, seeded generator.
 
+pub(crate) mod overrides;
 pub(crate) mod sample;
 pub(crate) mod space;
 pub(crate) mod spec;
 
 use space::DesignSpace;
-use spec::{Kind, ParamSpec, Value};
+use spec::{FieldInfo, Kind, ParamSpec, Value};
 
 /// A leaf parameter type: how values of a Rust type map to design-file values.
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not a parameter type",
+    label = "not a parameter type",
+    note = "a parameter is an `f64`, `i64`, `bool`, an enum with `#[derive(Choice)]` or an `Option` of such an enum",
+    note = "a nested group of parameters is a struct with `#[derive(Params)]` (and no `default`/`range`/`options`/`prob` on its field)"
+)]
 pub trait ParamValue: Sized + Clone {
     /// Parameter type.
     const KIND: Kind;
@@ -72,6 +79,11 @@ impl ParamValue for bool {
 
 /// An enum whose variants are the options of a categorical parameter
 /// (`#[derive(Choice)]`).
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not a choice of options",
+    label = "no `#[derive(Choice)]` on this type",
+    note = "add `#[derive(Choice)]` to the enum `{Self}`: its unit variants are the options"
+)]
 pub trait Choice: Sized + Copy + 'static {
     /// Option names, in declaration order.
     const NAMES: &'static [&'static str];
@@ -119,7 +131,16 @@ impl<T: Choice> ParamValue for Option<T> {
 }
 
 /// A group of design parameters (`#[derive(Params)]`).
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not a group of design parameters",
+    label = "no `#[derive(Params)]` on this type",
+    note = "add `#[derive(Params)]` to the struct `{Self}`",
+    note = "a field that is a single parameter needs `#[param(default = ..)]` (with `range`/`options` for numbers)"
+)]
 pub trait Params: Sized + Clone {
+    /// The group's fields, for checking overrides at compile time (generated).
+    #[doc(hidden)]
+    const FIELDS: &'static [FieldInfo] = &[];
     /// Append the specs of every leaf below this group, paths prefixed by `prefix`.
     fn describe(prefix: &str, out: &mut Vec<ParamSpec>);
     /// The design with every parameter at its default.

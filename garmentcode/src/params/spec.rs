@@ -179,3 +179,28 @@ fn describe(v: &Value) -> String {
         other => other.to_string(),
     }
 }
+
+/// One field of a parameter group: its Rust name, its name in design files and its shape.
+#[derive(Debug)]
+pub struct FieldInfo {
+    /// Rust field name (without `r#`).
+    pub field: &'static str,
+    /// Name in design files.
+    pub name: &'static str,
+    /// A parameter or a nested group.
+    pub shape: FieldShape,
+}
+
+/// What a field of a parameter group is.
+#[derive(Debug)]
+pub enum FieldShape {
+    /// A parameter of this type, with its numeric range if it has one.
+    Leaf {
+        /// Parameter type.
+        kind: Kind,
+        /// `range = lo..=hi` of numeric parameters.
+        range: Option<(f64, f64)>,
+    },
+    /// A nested group with these fields.
+    Group(&'static [FieldInfo]),
+}
