@@ -175,8 +175,8 @@ impl Arena {
     /// check) has coinciding ends, as it refuses any such edge. Linearising through
     /// the arena records the first such piece; builders call this after each step
     /// that linearises and fail with the returned error. Taking it clears it.
-    pub fn take_degenerate_linearization(&mut self) -> Option<crate::error::Error> {
-        self.degenerate_linearization.take().map(|p| crate::error::Error::DegenerateEdge { x: p.x, y: p.y })
+    pub fn take_degenerate_linearization(&mut self) -> Option<Error> {
+        self.degenerate_linearization.take().map(|p| Error::DegenerateEdge { x: p.x, y: p.y })
     }
 
     /// Record the first piece with coinciding ends among `start`, `interior...`,
