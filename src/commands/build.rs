@@ -1,7 +1,7 @@
 //! `garmentcode build`: a garment from a design and a body into a folder.
 
 use crate::cli::BuildArgs;
-use crate::commands::{CliError, load_body, load_design, user_warning, write_folder};
+use crate::commands::{CliError, load_body, load_design, write_folder};
 use crate::output::OutputSet;
 use garmentcode::Params;
 use garmentcode::io::write_design;
@@ -15,7 +15,7 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
     let built = build(&design, &body, &name).map_err(|e| CliError::Input(format!("{design_label} on {body_label}: {e}")))?;
     let warnings = built.checks.warnings();
     for w in &warnings {
-        eprintln!("warning: {}", user_warning(w));
+        eprintln!("warning: {}", garmentcode_cli::explain_warning(w));
     }
     if args.strict && !warnings.is_empty() {
         return Err(CliError::Rejected(format!(

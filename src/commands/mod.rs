@@ -107,17 +107,6 @@ pub fn load_body(arg: &str) -> Result<(garmentcode::Body, String), CliError> {
     Ok((b, arg.to_string()))
 }
 
-/// A build warning as users read it: the reference's internal error strings
-/// (`ERROR::IncorrectParams::...`, kept verbatim in checks.json) explained.
-pub fn user_warning(w: &str) -> String {
-    match w.split_once("ERROR::IncorrectParams::") {
-        Some((before, what)) => {
-            format!("{before}the reference refuses this combination of parameters ({what}); change one of them to get a valid garment")
-        }
-        None => w.to_string(),
-    }
-}
-
 /// `garmentcode completions SHELL`.
 pub fn completions(args: crate::cli::CompletionsArgs) -> Result<i32, CliError> {
     use clap::CommandFactory;

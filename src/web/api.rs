@@ -320,6 +320,11 @@ fn typed_design(values: &[(String, PValue)]) -> ApiResult<Design> {
     from_values(values, "design").map_err(design_error)
 }
 
+/// Warnings in words (see [`crate::explain_warning`]).
+fn explained(warnings: Vec<String>) -> Vec<String> {
+    warnings.iter().map(|w| crate::explain_warning(w)).collect()
+}
+
 /// The body of a request: absent for the neutral body, a built-in name, or an
 /// object with a body file's text (`yaml`) or measurements over a built-in body
 /// (`base`, default the neutral body; `measurements`: name → number, derived
@@ -613,7 +618,7 @@ pub fn pattern_text(input: &Json) -> ApiResult<String> {
                 "name": ev.name,
                 "panels": out.panels,
                 "stitches": out.stitches,
-                "warnings": out.checks.warnings(),
+                "warnings": explained(out.checks.warnings()),
                 "checks": checks_json(&out.checks),
                 "svg": out.svg,
                 "body": body,
@@ -652,7 +657,7 @@ pub fn random(input: &Json) -> ApiResult<Json> {
     Ok(match outcome {
         Outcome::Accepted(sample) => {
             let values = design_to_values(&sample.design);
-            json!({ "ok": true, "seed": seed, "draw": sample.attempt, "design": values_json(&values), "warnings": sample.built.checks.warnings() })
+            json!({ "ok": true, "seed": seed, "draw": sample.attempt, "design": values_json(&values), "warnings": explained(sample.built.checks.warnings()) })
         }
         Outcome::Exhausted { rejections, .. } => json!({
             "ok": false,

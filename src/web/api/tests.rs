@@ -336,3 +336,13 @@ fn layout_chooses_the_drawing() {
     assert_eq!(status, 400);
     assert!(r["error"].as_str().unwrap().contains("placed or flat"), "{r}");
 }
+
+#[test]
+fn warnings_explain_the_references_internal_errors() {
+    let (status, r) =
+        post("/api/pattern", json!({ "design": { "meta.upper": null, "meta.wb": null, "meta.bottom": "Skirt2", "skirt.ruffle": 1.5 } }));
+    assert_eq!(status, 200, "{r}");
+    let w: Vec<&str> = r["warnings"].as_array().unwrap().iter().map(|x| x.as_str().unwrap()).collect();
+    assert!(w.iter().any(|x| x.contains("refuses this combination of parameters (Skirt2 ruffles + belt)")), "{w:?}");
+    assert!(w.iter().all(|x| !x.contains("ERROR::")), "{w:?}");
+}
