@@ -237,6 +237,9 @@ pub struct Arena {
     pub(crate) spare_interfaces: Vec<InterfaceData>,
     /// See [`Arena::stop_at_self_intersection`].
     pub(crate) stop_at_self_intersection: bool,
+    /// Where a linearisation first made a piece whose ends coincide (see
+    /// [`Arena::take_degenerate_linearization`]).
+    degenerate_linearization: std::cell::Cell<Option<Vec2>>,
 }
 
 impl Default for Arena {
@@ -256,6 +259,35 @@ impl Arena {
             labels: vec![String::new()],
             spare_interfaces: Vec::new(),
             stop_at_self_intersection: false,
+            degenerate_linearization: std::cell::Cell::new(None),
+        }
+    }
+
+    /// The reference refuses a garment whenever one of the straight pieces it makes
+    /// while linearising an edge (for a bounding box, a centre, a self-intersection
+    /// check) has coinciding ends, as it refuses any such edge. Linearising through
+    /// the arena records the first such piece; builders call this after each step
+    /// that linearises and fail with the returned error. Taking it clears it.
+    pub fn take_degenerate_linearization(&mut self) -> Option<Error> {
+        self.degenerate_linearization.take().map(|p| Error::DegenerateEdge { x: p.x, y: p.y })
+    }
+
+    /// Record the first piece with coinciding ends among `start`, `interior...`,
+    /// `end` (an edge split at its linearisation points).
+    pub(crate) fn note_linearization(&self, start: Vec2, interior: &[Vec2], end: Vec2) {
+        if interior.is_empty() || self.degenerate_linearization.get().is_some() {
+            return;
+        }
+        let pts = std::iter::once(start).chain(interior.iter().copied()).chain(std::iter::once(end));
+        let mut prev: Option<Vec2> = None;
+        for p in pts {
+            if let Some(q) = prev {
+                if check_distinct(q, p).is_err() {
+                    self.degenerate_linearization.set(Some(q));
+                    return;
+                }
+            }
+            prev = Some(p);
         }
     }
 
@@ -277,6 +309,7 @@ impl Arena {
         // the next garment reuses their buffers.
         self.spare_interfaces.append(&mut self.interfaces);
         self.labels.truncate(1);
+        self.degenerate_linearization.set(None);
     }
 
     // ---- vertices ----
@@ -444,7 +477,9 @@ impl Arena {
     /// Appends them to `out`.
     pub(crate) fn linearized_points_into(&self, e: EdgeId, n: Option<usize>, out: &mut Vec<Vec2>) {
         let g = self.geom(e);
+        let from = out.len();
         g.linearize_into(n.unwrap_or_else(|| g.default_linearization()), out);
+        self.note_linearization(g.start, &out[from..], g.end);
     }
 
     /// Deep copy of edges: new edges and new vertices, with vertex sharing among the
@@ -486,4 +521,31 @@ pub(crate) fn check_distinct(a: Vec2, b: Vec2) -> Result<()> {
         return Err(Error::Geometry(format!("edge with non-finite end points ({a}, {b})")));
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::arena::EdgeSeq;
+    use crate::edge::Curve;
+
+    #[test]
+    fn a_linearisation_piece_with_coinciding_ends_is_refused_as_the_reference_does() {
+        let mut a = Arena::new();
+        // A curve 5e-4 long: valid as an edge, but its ten linearisation pieces are
+        // each shorter than the closeness tolerance.
+        let s = a.vertex(Vec2::new(0.0, 0.0));
+        let e = a.vertex(Vec2::new(5e-4, 0.0));
+        let tiny = a.edge(s, e, Curve::Quadratic(Vec2::new(0.5, 0.2))).unwrap();
+        let seq = EdgeSeq::from(vec![tiny]);
+        let _ = seq.linearized_positions_n(&a, None);
+        let err = a.take_degenerate_linearization().expect("refused");
+        assert!(err.to_string().contains("start and end of an edge should differ"), "{err}");
+        assert!(a.take_degenerate_linearization().is_none(), "taken once");
+        // A normal curve passes.
+        let far = a.vertex(Vec2::new(30.0, 0.0));
+        let normal = a.edge(s, far, Curve::Quadratic(Vec2::new(0.5, 0.2))).unwrap();
+        let _ = EdgeSeq::from(vec![normal]).linearized_positions_n(&a, None);
+        assert!(a.take_degenerate_linearization().is_none());
+    }
 }

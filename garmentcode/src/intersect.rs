@@ -56,7 +56,16 @@ fn edge_segments(e: &Edge, out: &mut Vec<Seg>) {
 pub fn panel_segments(a: &Arena, panel: PanelId) -> Vec<Seg> {
     let mut out = Vec::with_capacity(panel.edges(a).len() + 32);
     for &e in panel.edges(a).iter() {
-        edge_segments(&a.geom(e), &mut out);
+        let g = a.geom(e);
+        let from = out.len();
+        edge_segments(&g, &mut out);
+        if out.len() - from > 1 {
+            // An arc's pieces: their inner ends, for the reference's refusal of
+            // pieces whose ends coincide.
+            let inner: Vec<crate::math::Vec2> =
+                out[from + 1..].iter().map(|s| crate::math::Vec2::new(s.start()[0], s.start()[1])).collect();
+            a.note_linearization(g.start, &inner, g.end);
+        }
     }
     out
 }

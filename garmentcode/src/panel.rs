@@ -328,6 +328,14 @@ impl PanelId {
     /// is not modified (callers substitute).
     pub fn add_dart(self, a: &mut Arena, shape: &EdgeSeq, edge: EdgeId, offset: f64, side: EdgeSide) -> Result<Cut> {
         let cut = crate::ops::cut_into_edge(a, shape, edge, offset, side)?;
+        if cut.shape.len() < 2 {
+            // A dart narrower than the closeness tolerance collapses to one edge.
+            return Err(crate::Error::Dart(format!(
+                "the dart in panel '{}' is too narrow to cut ({} edge(s) left of its two legs)",
+                self.name(a),
+                cut.shape.len()
+            )));
+        }
         let l0 = a.interface(self, cut.shape[0]);
         let l1 = a.interface(self, cut.shape[1]);
         let rule = StitchRule::new(a, l0, l1)?;

@@ -1,7 +1,7 @@
 //! Design files in the reference's format: reading into typed parameter structs and
 //! writing them back.
 
-use super::design_error::DesignError;
+use super::design_error::{DesignError, MAX_SHOWN};
 use super::design_space::{at, from_node, insert, key, to_node};
 use crate::params::space::DesignSpace;
 use crate::params::spec::Value;
@@ -53,7 +53,12 @@ fn walk(node: &Node, prefix: &str, space: &DesignSpace, values: &mut [(String, V
             (Some(_), None) => problems.push(format!("{}: design.{path}: a parameter needs a `v:` value", at(v))),
             (None, _) if space.is_group(&path) => walk(v, &path, space, values, problems),
             (None, _) => {
-                let hint = suggestion(&path, space).map(|s| format!(" (did you mean design.{s}?)")).unwrap_or_default();
+                // Suggestions only for the problems shown (they cost a pass over the space).
+                let hint = (problems.len() < MAX_SHOWN)
+                    .then(|| suggestion(&path, space))
+                    .flatten()
+                    .map(|s| format!(" (did you mean design.{s}?)"))
+                    .unwrap_or_default();
                 problems.push(format!("{}: design.{path}: unknown parameter{hint}", at(k)));
             }
         }

@@ -18,14 +18,20 @@ impl DesignError {
     }
 }
 
+/// Problems a [`DesignError`] shows; the rest are counted.
+pub const MAX_SHOWN: usize = 20;
+
 impl fmt::Display for DesignError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.problems.len() == 1 {
             return write!(f, "{}: {}", self.file, self.problems[0]);
         }
         write!(f, "{}: {} problems", self.file, self.problems.len())?;
-        for p in &self.problems {
+        for p in self.problems.iter().take(MAX_SHOWN) {
             write!(f, "\n  {p}")?;
+        }
+        if self.problems.len() > MAX_SHOWN {
+            write!(f, "\n  ... and {} more", self.problems.len() - MAX_SHOWN)?;
         }
         Ok(())
     }

@@ -367,7 +367,8 @@ impl<'a> Reader<'a, '_> {
                 break;
             }
             let Kind::Key(key, inline) = l.kind else { return None };
-            if l.indent > n || self.keys[base..].contains(&key) {
+            // Many keys: the full reader (linear in keys) handles them.
+            if l.indent > n || self.keys.len() - base >= 256 || self.keys[base..].contains(&key) {
                 return None;
             }
             self.keys.push(key);

@@ -14,13 +14,60 @@ use crate::pattern::{Curvature, EdgeSpec, PanelSpec, Pattern, Properties, Stitch
 use serde_json::Value;
 use std::fmt::Write;
 
+/// Largest coordinate, translation or arc radius a specification may hold, in cm.
+pub const MAX_EXTENT_CM: f64 = 10_000.0;
+/// Largest relative control-point coordinate (in edge lengths).
+pub const MAX_CONTROL: f64 = 1_000.0;
+/// Most panels a specification may hold.
+pub const MAX_PANELS: usize = 1_000;
+/// Most edges one panel may have.
+pub const MAX_EDGES_PER_PANEL: usize = 1_000;
+
 impl Pattern {
     /// Parse a specification file's text.
     pub fn from_json(text: &str) -> Result<Pattern> {
         let v: Value = serde_json::from_str(text).map_err(|e| Error::Input(format!("malformed JSON: {e}")))?;
         let mut p = read_pattern(&v)?;
         p.normalize_units()?;
+        p.check_extent()?;
         Ok(p)
+    }
+
+    /// Refuse geometry no garment has, before any algorithm whose work grows with
+    /// it runs: coordinates beyond [`MAX_EXTENT_CM`], control points far outside
+    /// their edge, and more panels or edges than [`MAX_PANELS`] and
+    /// [`MAX_EDGES_PER_PANEL`].
+    fn check_extent(&self) -> Result<()> {
+        let far = |x: f64| x.abs() > MAX_EXTENT_CM;
+        if self.panels.len() > MAX_PANELS {
+            return Err(Error::Input(format!("{} panels: at most {MAX_PANELS} are accepted", self.panels.len())));
+        }
+        for p in &self.panels {
+            let at = format!("pattern.panels.{}", p.name);
+            if p.edges.len() > MAX_EDGES_PER_PANEL {
+                return Err(Error::Input(format!("{at}: {} edges, at most {MAX_EDGES_PER_PANEL} are accepted", p.edges.len())));
+            }
+            let coords = p.vertices.iter().flatten().chain(&p.translation);
+            if let Some(x) = coords.copied().find(|x| far(*x)) {
+                return Err(Error::Input(format!(
+                    "{at}: coordinate {x} cm is beyond ±{MAX_EXTENT_CM} cm (100 m); no garment is that large"
+                )));
+            }
+            for (i, e) in p.edges.iter().enumerate() {
+                let bad = match &e.curvature {
+                    Some(Curvature::Quadratic(c)) => c.iter().any(|x| x.abs() > MAX_CONTROL),
+                    Some(Curvature::Cubic(c1, c2)) => c1.iter().chain(c2).any(|x| x.abs() > MAX_CONTROL),
+                    Some(Curvature::Circle { radius, .. }) => far(*radius),
+                    None => false,
+                };
+                if bad {
+                    return Err(Error::Input(format!(
+                        "{at}.edges[{i}].curvature: a control point more than {MAX_CONTROL} edge lengths away or a radius beyond {MAX_EXTENT_CM} cm"
+                    )));
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The specification file's text.
@@ -113,8 +160,10 @@ impl Pattern {
     /// Convert legacy unit scales to centimetres.
     fn normalize_units(&mut self) -> Result<()> {
         let u = self.properties.units_in_meter;
-        if !(u.is_finite() && u > 0.0) {
-            return Err(Error::Input(format!("properties.units_in_meter: expected a positive number, got {u}")));
+        if !(u.is_finite() && (1.0..=1000.0).contains(&u)) {
+            return Err(Error::Input(format!(
+                "properties.units_in_meter: expected 1 (metres) to 1000 (millimetres), usually 100 (centimetres), got {u}"
+            )));
         }
         if u != 100.0 {
             let k = 100.0 / u;

@@ -203,7 +203,16 @@ pub enum IntersectError {
     NodalBezier,
     /// `bezier_intersections` ran out of subdivision levels (`Exception`).
     MaxIterations,
+    /// `bezier_intersections` had more than [`MAX_PAIRS`] candidate pairs at one
+    /// level: the curves overlap along a stretch (the reference's search grows
+    /// fourfold per level there and never ends in practice).
+    TooManyPairs,
 }
+
+/// Most candidate sub-curve pairs the Bézier–Bézier search keeps at one level.
+/// Curves that meet at isolated points keep a few dozen; only curves overlapping
+/// along a stretch come near it.
+pub const MAX_PAIRS: usize = 4096;
 
 impl std::fmt::Display for IntersectError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -212,6 +221,7 @@ impl std::fmt::Display for IntersectError {
             IntersectError::IdenticalSegments => "intersecting a segment with an equal segment",
             IntersectError::NodalBezier => "bezier is nodal",
             IntersectError::MaxIterations => "bezier_intersections has reached maximum iterations without terminating",
+            IntersectError::TooManyPairs => "two curves overlap along a stretch (the intersection search was stopped)",
         };
         f.write_str(s)
     }
@@ -1646,6 +1656,9 @@ fn bezier_intersections(
                 new_pairs.push(BPair { b1: c12, b2: c21, t1: t12, t2: t21 });
                 new_pairs.push(BPair { b1: c12, b2: c22, t1: t12, t2: t22 });
             }
+        }
+        if new_pairs.len() > MAX_PAIRS {
+            return Err(IntersectError::TooManyPairs);
         }
         pair_list = new_pairs;
         k += 1;

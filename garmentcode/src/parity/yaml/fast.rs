@@ -271,7 +271,8 @@ impl<'a> Fast<'a> {
             if l.indent < n {
                 break;
             }
-            if l.indent > n || self.is_entry(&l) {
+            // Many keys: the full parser (linear in keys) handles them.
+            if l.indent > n || self.is_entry(&l) || self.pairs.len() - base >= 256 {
                 return None;
             }
             let colon = self.key_colon(l.start, l.end)?;

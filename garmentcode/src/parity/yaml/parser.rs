@@ -231,6 +231,7 @@ impl<'a> Parser<'a> {
         let open = self.s.next_token()?.start; // BLOCK-MAPPING-START
         self.block_cols.push((open.col, true));
         let mut pairs: Vec<(Node, Node)> = Vec::new();
+        let mut index = KeyIndex::default();
         loop {
             if self.s.peek_kind()? != Kind::Key {
                 break;
@@ -246,7 +247,7 @@ impl<'a> Parser<'a> {
                 let m = self.s.peek_token()?.start;
                 self.empty(m)
             };
-            self.push_pair(&mut pairs, key, value)?;
+            self.push_pair(&mut pairs, &mut index, key, value)?;
         }
         if self.s.peek_kind()? != Kind::BlockEnd {
             return Err(self.unexpected_in_block(open, true));
@@ -271,8 +272,8 @@ impl<'a> Parser<'a> {
 
     /// Appends a pair, refusing duplicate keys (PyYAML would silently keep the
     /// last value). Keys compare like Python dict keys: `1`, `1.0` and `true` are equal.
-    fn push_pair(&self, pairs: &mut Vec<(Node, Node)>, key: Node, value: Node) -> Result<(), YamlError> {
-        if let Some((first, _)) = find_duplicate(pairs, &key) {
+    fn push_pair(&self, pairs: &mut Vec<(Node, Node)>, index: &mut KeyIndex, key: Node, value: Node) -> Result<(), YamlError> {
+        if let Some((first, _)) = index.find(pairs, &key) {
             let shown = match &key.value {
                 Value::Str(s) => short_quote(s),
                 Value::Null => "null".to_string(),
@@ -286,6 +287,7 @@ impl<'a> Parser<'a> {
                 self.error(m, format!("duplicate mapping key {} (first defined on line {}, column {})", shown, first.line, first.col))
             );
         }
+        index.add(pairs.len(), &key);
         pairs.push((key, value));
         Ok(())
     }
@@ -355,13 +357,14 @@ impl<'a> Parser<'a> {
     fn parse_flow_mapping(&mut self) -> Result<Node, YamlError> {
         let open = self.s.next_token()?.start; // '{'
         let mut pairs: Vec<(Node, Node)> = Vec::new();
+        let mut index = KeyIndex::default();
         let mut first = true;
         while self.next_flow_entry(open, Kind::FlowMapEnd, b'}', &mut first)? {
             let t = self.s.peek_token()?;
             match t.kind {
                 Kind::Key => {
                     let (_, key, value) = self.flow_pair(Kind::FlowMapEnd)?;
-                    self.push_pair(&mut pairs, key, value)?;
+                    self.push_pair(&mut pairs, &mut index, key, value)?;
                 }
                 Kind::FlowMapEnd => break,
                 _ => {
@@ -374,7 +377,7 @@ impl<'a> Parser<'a> {
                     };
                     let m = self.s.peek_token()?.start;
                     let value = self.empty(m);
-                    self.push_pair(&mut pairs, key, value)?;
+                    self.push_pair(&mut pairs, &mut index, key, value)?;
                 }
             }
         }
@@ -523,10 +526,32 @@ impl<'a> Parser<'a> {
     }
 }
 
-pub(crate) fn find_duplicate<'p>(pairs: &'p [(Node, Node)], key: &Node) -> Option<&'p (Node, Node)> {
-    if let Value::Str(s) = &key.value {
-        // Fast path for the usual string keys.
-        return pairs.iter().find(|(k, _)| matches!(&k.value, Value::Str(t) if t == s));
+/// The keys of one mapping being read, so that finding a duplicate takes constant
+/// time for string keys (a mapping of many keys reads in linear time).
+#[derive(Default)]
+struct KeyIndex {
+    /// String keys → position in the mapping.
+    strings: std::collections::HashMap<String, usize>,
+    /// Positions of the other (scalar) keys, compared one by one.
+    others: Vec<usize>,
+}
+
+impl KeyIndex {
+    /// The earlier pair whose key equals `key`, if any.
+    fn find<'p>(&self, pairs: &'p [(Node, Node)], key: &Node) -> Option<&'p (Node, Node)> {
+        match &key.value {
+            Value::Str(s) => self.strings.get(s).map(|&i| &pairs[i]),
+            v => self.others.iter().map(|&i| &pairs[i]).find(|(k, _)| keys_equal(&k.value, v)),
+        }
     }
-    pairs.iter().find(|(k, _)| keys_equal(&k.value, &key.value))
+
+    /// Record the key of the pair at position `i`.
+    fn add(&mut self, i: usize, key: &Node) {
+        match &key.value {
+            Value::Str(s) => {
+                self.strings.entry(s.clone()).or_insert(i);
+            }
+            _ => self.others.push(i),
+        }
+    }
 }
