@@ -81,6 +81,12 @@ DIR/dataset_properties.yaml (types, rejections by reason, time).
 Sample i depends on (S, i) alone: the same with any --jobs and in any shard. Designs failing the \
 reference's filters are drawn again (up to 100 times). A rerun into DIR skips finished samples.
 
+With --layout shards[:N], the samples go into tar shards of N samples (default 1000): \
+DIR/shard-000000.tar holds samples 0 to N-1, each file named after its sample \
+(rand_0000042.specification.json, ...), with DIR/index.jsonl listing every sample's shard and \
+garment type. A shard is the same whatever --jobs and --shard; with --shard I/K a task writes \
+the shards whose number k has k % K == I. --unpack SHARD.tar... --out DIR gives the folders back.
+
 With --replay INDEX[:ATTEMPT], rebuild one sample, or one attempt of it (also a rejected one), into \
 DIR as `build` would (drawings included), and print the filters' verdict.";
 
@@ -237,11 +243,11 @@ fn positive_cm(s: &str) -> Result<f64, String> {
 #[derive(Args, Debug)]
 pub struct SampleArgs {
     /// Number of samples (not with --replay).
-    #[arg(short, long = "n", value_name = "N", required_unless_present = "replay", value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(short, long = "n", value_name = "N", required_unless_present_any = ["replay", "unpack"], value_parser = clap::value_parser!(u64).range(1..))]
     pub n: Option<u64>,
     /// Seed: any whole number from 0 to 2^64-1.
-    #[arg(short, long, value_name = "S")]
-    pub seed: u64,
+    #[arg(short, long, value_name = "S", required_unless_present = "unpack")]
+    pub seed: Option<u64>,
     /// Output folder.
     #[arg(short, long, value_name = "DIR")]
     pub out: PathBuf,
@@ -263,6 +269,12 @@ pub struct SampleArgs {
     /// Rebuild one sample, or one attempt of it, into DIR as `build` would.
     #[arg(short, long, value_name = "INDEX[:ATTEMPT]")]
     pub replay: Option<String>,
+    /// Dataset layout: a folder per sample (default), or tar shards of N samples (default 1000).
+    #[arg(long, value_name = "folders|shards[:N]", conflicts_with = "replay")]
+    pub layout: Option<String>,
+    /// Unpack shards into DIR as the folder layout (a folder per sample).
+    #[arg(long, value_name = "SHARD.tar", num_args = 1.., conflicts_with_all = ["n", "replay", "layout", "shard", "design_space", "bodies", "formats", "jobs"])]
+    pub unpack: Vec<PathBuf>,
 }
 
 /// `garmentcode serve`.

@@ -1,6 +1,8 @@
 //! `garmentcode sample --n N --seed S --out DIR [--design-space FILE.yaml]
-//! [--bodies NAME,NAME|DIR] [--jobs J] [--shard I/K] [--formats json,svg,png]`:
-//! a dataset of random garments.
+//! [--bodies NAME,NAME|DIR] [--jobs J] [--shard I/K] [--formats json,svg,png]
+//! [--layout folders|shards[:N]]`: a dataset of random garments, as a folder per
+//! sample or as tar shards (see `shards`); `--unpack SHARD.tar... --out DIR` turns
+//! shards back into folders.
 //!
 //! The sampling itself is `garments::sample` (sample `i` depends on `(S, i)` alone);
 //! this command validates the input before doing any work, spreads the samples of
@@ -10,9 +12,13 @@
 //! Shards: shard `I` of `K` makes the samples whose index `i` has `i % K == I`.
 //! Round-robin rather than blocks, so that a sample's shard does not depend on `N`
 //! (a dataset extended with a larger `N` keeps its samples in their shards) and
-//! every shard gets a similar mix of cheap and expensive designs.
+//! every shard gets a similar mix of cheap and expensive designs. With
+//! `--layout shards` a task takes whole archives instead: shard `k` of the archives
+//! (samples `k·N .. (k+1)·N`) is made by the task with `k % K == I`, so an archive
+//! is the same whatever `--shard` and `--jobs`.
 
 mod progress;
+mod shards;
 mod store;
 mod summary;
 
@@ -23,7 +29,7 @@ use garmentcode::io::write_design;
 use garmentcode::{Arena, Params};
 use garments::Design;
 use garments::sample::{DatasetSampler, MAX_ATTEMPTS, NamedBody, Outcome, sample_name};
-use std::collections::HashSet;
+use std::collections::{BTreeMap, HashSet};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::mpsc;
@@ -41,6 +47,28 @@ struct Options {
     shard: Option<(u64, u64)>,
     formats: Formats,
     replay: Option<(u64, Option<u32>)>,
+    layout: Layout,
+}
+
+/// `--layout`: a folder per sample, or tar shards of so many samples.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Layout {
+    Folders,
+    Shards(u64),
+}
+
+/// `folders`, `shards` or `shards:N` with `N >= 1`.
+fn parse_layout(s: &str) -> Result<Layout, CliError> {
+    let bad = || usage(format!("sample --layout: expected folders, shards or shards:N with N >= 1 samples per shard, got '{s}'"));
+    match s.split_once(':') {
+        None if s == "folders" => Ok(Layout::Folders),
+        None if s == "shards" => Ok(Layout::Shards(shards::DEFAULT_SIZE)),
+        Some(("shards", size)) => match size.trim().parse::<u64>() {
+            Ok(size) if size >= 1 => Ok(Layout::Shards(size)),
+            _ => Err(bad()),
+        },
+        _ => Err(bad()),
+    }
 }
 
 fn usage(m: String) -> CliError {
@@ -59,9 +87,10 @@ impl Options {
         // A replay writes its sample as `build` does: with both drawings.
         let default_formats = if replay.is_some() { "json,svg,png" } else { "json" };
         let formats = parse_formats(args.formats.as_deref().unwrap_or(default_formats))?;
+        let layout = args.layout.as_deref().map(parse_layout).transpose()?.unwrap_or(Layout::Folders);
         Ok(Options {
             n: args.n,
-            seed: args.seed,
+            seed: args.seed.expect("--seed is required without --unpack"),
             out: args.out,
             design_space: args.design_space,
             bodies: args.bodies,
@@ -69,6 +98,7 @@ impl Options {
             shard,
             formats,
             replay,
+            layout,
         })
     }
 }
@@ -186,6 +216,9 @@ fn prepare_out(dir: &Path) -> Result<(), CliError> {
 }
 
 pub fn run(args: SampleArgs) -> Result<i32, CliError> {
+    if !args.unpack.is_empty() {
+        return unpack(&args.unpack, &args.out);
+    }
     let opts = Options::from_args(args)?;
     let (space, space_label) = load_space(opts.design_space.as_deref())?;
     let bodies = load_bodies(opts.bodies.as_deref())?;
@@ -200,99 +233,87 @@ pub fn run(args: SampleArgs) -> Result<i32, CliError> {
     let settings = Settings::new(&sampler, opts.formats);
     let (shard_i, shard_k) = opts.shard.unwrap_or((0, 1));
     let wanted = |i: u64| i % shard_k == shard_i;
-    let existing = store::scan(&opts.out, &settings, n, wanted).map_err(CliError::Input)?;
-    if existing.removed_temps > 0 {
-        eprintln!("removed {} unfinished sample folder(s) of an interrupted run", existing.removed_temps);
-    }
-    let finished: HashSet<u64> = existing.finished.iter().map(|r| r.index).collect();
-    // Indices of this shard: shard_i, shard_i + K, ... below n.
-    let slots = if shard_i < n { (n - shard_i).div_ceil(shard_k) } else { 0 };
-    let todo = slots - finished.len() as u64;
-    if !finished.is_empty() {
-        eprintln!("resuming: {} of {slots} samples already made", finished.len());
-    }
-
     let start = Instant::now();
-    let jobs = opts.jobs.min(todo.max(1) as usize);
-    let next = AtomicU64::new(0);
-    let stop = AtomicBool::new(false);
-    let (tx, rx) = mpsc::channel::<Result<Record, String>>();
-    let mut made: Vec<Record> = Vec::new();
-    let mut error: Option<String> = None;
-    let mut progress = progress::Progress::new(todo);
-    let collector = std::thread::current();
-    let running = AtomicUsize::new(jobs);
-    std::thread::scope(|scope| {
-        for _ in 0..jobs {
-            let tx = tx.clone();
-            let (next, stop, settings, finished, out) = (&next, &stop, &settings, &finished, &opts.out);
-            let (collector, running) = (&collector, &running);
-            scope.spawn(move || {
-                // The last worker to finish wakes the collector at once.
-                struct Done<'a>(&'a AtomicUsize, &'a std::thread::Thread);
-                impl Drop for Done<'_> {
-                    fn drop(&mut self) {
-                        if self.0.fetch_sub(1, Ordering::AcqRel) == 1 {
-                            self.1.unpark();
-                        }
-                    }
-                }
-                let _done = Done(running, collector);
-                // Declared after `_done`, so dropped (closing the channel) before it.
-                let tx = tx;
-                let mut arena = Arena::new();
-                while !stop.load(Ordering::Relaxed) {
-                    let slot = next.fetch_add(1, Ordering::Relaxed);
-                    if slot >= slots {
-                        break;
-                    }
-                    let index = shard_i + slot * shard_k;
-                    if finished.contains(&index) {
-                        continue;
-                    }
-                    let result = store::make(out, settings, &mut arena, index);
-                    if result.is_err() {
-                        stop.store(true, Ordering::Relaxed);
-                    }
-                    if tx.send(result).is_err() {
-                        break;
-                    }
-                }
-            });
-        }
-        drop(tx);
-        // Records are collected in batches: waking this thread for every sample
-        // (thousands a second) would take the cores from the workers.
-        let mut done = false;
-        while !done {
-            std::thread::park_timeout(Duration::from_millis(20));
-            loop {
-                match rx.try_recv() {
-                    Ok(Ok(record)) => {
-                        made.push(record);
-                        progress.inc();
-                    }
-                    Ok(Err(e)) => {
-                        error.get_or_insert(e);
-                    }
-                    Err(mpsc::TryRecvError::Empty) => break,
-                    Err(mpsc::TryRecvError::Disconnected) => {
-                        done = true;
-                        break;
-                    }
-                }
+    let (made, existing, jobs) = match opts.layout {
+        Layout::Folders => {
+            let existing = store::scan(&opts.out, &settings, n, wanted).map_err(CliError::Input)?;
+            if existing.removed_temps > 0 {
+                eprintln!("removed {} unfinished sample folder(s) of an interrupted run", existing.removed_temps);
             }
-            progress.tick();
+            let finished: HashSet<u64> = existing.finished.iter().map(|r| r.index).collect();
+            // Indices of this shard: shard_i, shard_i + K, ... below n.
+            let slots = if shard_i < n { (n - shard_i).div_ceil(shard_k) } else { 0 };
+            let todo = slots - finished.len() as u64;
+            if !finished.is_empty() {
+                eprintln!("resuming: {} of {slots} samples already made", finished.len());
+            }
+            let jobs = opts.jobs.min(todo.max(1) as usize);
+            let index_of = |slot: u64| Some(shard_i + slot * shard_k).filter(|i| !finished.contains(i));
+            let work = |arena: &mut Arena, index: u64| store::make(&opts.out, &settings, arena, index);
+            let mut made = Vec::new();
+            let collect = |record: Record| {
+                made.push(record);
+                Ok(())
+            };
+            pool(jobs, slots, todo, index_of, work, collect)?;
+            (made, existing.finished, jobs)
         }
-    });
-    progress.finish();
-    if let Some(e) = error {
-        return Err(CliError::Failed(format!("{e}\nstopped; the samples written so far are complete, rerun to resume")));
-    }
-
+        Layout::Shards(size) => {
+            let count = n.div_ceil(size);
+            let wanted_shard = |k: u64| k % shard_k == shard_i;
+            let existing = shards::scan(&opts.out, &settings, n, size, wanted_shard).map_err(CliError::Input)?;
+            if existing.removed_temps > 0 {
+                eprintln!("removed {} unfinished shard(s) of an interrupted run", existing.removed_temps);
+            }
+            let mut finished = existing.records;
+            // Samples absent from a finished shard had every design rejected; their
+            // records are drawn again (and a shard missing an accepted sample is not ours).
+            let mut arena = Arena::new();
+            for index in existing.missing {
+                let (record, files) = store::draw(&settings, &mut arena, index).map_err(CliError::Failed)?;
+                if files.is_some() {
+                    return Err(CliError::Input(format!(
+                        "{}: has no {}: the dataset was made with another --n or shard size; choose another --out or the same --layout and --n",
+                        opts.out.join(shards::shard_name(index / size)).display(),
+                        sample_name(index)
+                    )));
+                }
+                finished.push(record);
+            }
+            finished.sort_by_key(|r| r.index);
+            let todo_shards: Vec<u64> = (0..count).filter(|&k| wanted_shard(k) && existing.done.binary_search(&k).is_err()).collect();
+            let todo: u64 = todo_shards.iter().map(|&k| shards::range(k, size, n).count() as u64).sum();
+            if !existing.done.is_empty() {
+                eprintln!("resuming: {} of {} shards already made", existing.done.len(), existing.done.len() + todo_shards.len());
+            }
+            let jobs = opts.jobs.min(todo.max(1) as usize);
+            let slots = todo_shards.len() as u64 * size;
+            let index_of = |slot: u64| Some(todo_shards[(slot / size) as usize] * size + slot % size).filter(|&i| i < n);
+            let work = |arena: &mut Arena, index: u64| store::draw(&settings, arena, index);
+            // Samples of shards in progress, written once a shard is complete.
+            let mut pending: BTreeMap<u64, Vec<(u64, Option<store::Files>)>> = BTreeMap::new();
+            let mut made = Vec::new();
+            let out = &opts.out;
+            let collect = |(record, files): (Record, Option<store::Files>)| {
+                let k = record.index / size;
+                let shard = pending.entry(k).or_default();
+                shard.push((record.index, files));
+                made.push(record);
+                if shard.len() == shards::range(k, size, n).count() {
+                    let mut samples = pending.remove(&k).unwrap_or_default();
+                    samples.sort_by_key(|s| s.0);
+                    let samples: Vec<(u64, store::Files)> = samples.into_iter().filter_map(|(i, f)| Some((i, f?))).collect();
+                    shards::write_shard(out, k, &samples)?;
+                }
+                Ok(())
+            };
+            pool(jobs, slots, todo, index_of, work, collect)?;
+            (made, finished, jobs)
+        }
+    };
     let seconds = start.elapsed().as_secs_f64();
     let n_made = made.len();
-    let mut records = existing.finished;
+    let mut records = existing;
     let resumed = records.len();
     records.extend(made);
     records.sort_by_key(|r| r.index);
@@ -311,6 +332,9 @@ pub fn run(args: SampleArgs) -> Result<i32, CliError> {
     let props = opts.out.join(summary::file_name(opts.shard));
     let mut set = OutputSet::default();
     set.add(&summary::file_name(opts.shard), summary::properties(&about, &records));
+    if let Layout::Shards(size) = opts.layout {
+        set.add(&shards::index_file_name(opts.shard), records.iter().filter_map(|r| shards::index_line(r, size)).collect::<String>());
+    }
     set.write_files_into(&opts.out).map_err(|e| CliError::Failed(format!("cannot write {}: {e}", props.display())))?;
 
     let failed: Vec<String> = records.iter().filter(|r| r.accepted.is_none()).map(|r| sample_name(r.index)).collect();
@@ -332,6 +356,105 @@ pub fn run(args: SampleArgs) -> Result<i32, CliError> {
             props.display()
         )));
     }
+    Ok(0)
+}
+
+/// Run `work` over `jobs` threads on the sample indices of `slots` slots
+/// (`index_of` gives a slot's index, `None` to skip it), handing each result to
+/// `collect` on this thread. Stops at the first error, after the samples in
+/// progress. `todo` is the number of samples, for the progress line.
+fn pool<T: Send>(
+    jobs: usize,
+    slots: u64,
+    todo: u64,
+    index_of: impl Fn(u64) -> Option<u64> + Sync,
+    work: impl Fn(&mut Arena, u64) -> Result<T, String> + Sync,
+    mut collect: impl FnMut(T) -> Result<(), String>,
+) -> Result<(), CliError> {
+    let next = AtomicU64::new(0);
+    let stop = AtomicBool::new(false);
+    let (tx, rx) = mpsc::channel::<Result<T, String>>();
+    let mut error: Option<String> = None;
+    let mut progress = progress::Progress::new(todo);
+    let collector = std::thread::current();
+    let running = AtomicUsize::new(jobs);
+    std::thread::scope(|scope| {
+        for _ in 0..jobs {
+            let tx = tx.clone();
+            let (next, stop, index_of, work) = (&next, &stop, &index_of, &work);
+            let (collector, running) = (&collector, &running);
+            scope.spawn(move || {
+                // The last worker to finish wakes the collector at once.
+                struct Done<'a>(&'a AtomicUsize, &'a std::thread::Thread);
+                impl Drop for Done<'_> {
+                    fn drop(&mut self) {
+                        if self.0.fetch_sub(1, Ordering::AcqRel) == 1 {
+                            self.1.unpark();
+                        }
+                    }
+                }
+                let _done = Done(running, collector);
+                // Declared after `_done`, so dropped (closing the channel) before it.
+                let tx = tx;
+                let mut arena = Arena::new();
+                while !stop.load(Ordering::Relaxed) {
+                    let slot = next.fetch_add(1, Ordering::Relaxed);
+                    if slot >= slots {
+                        break;
+                    }
+                    let Some(index) = index_of(slot) else { continue };
+                    let result = work(&mut arena, index);
+                    if result.is_err() {
+                        stop.store(true, Ordering::Relaxed);
+                    }
+                    if tx.send(result).is_err() {
+                        break;
+                    }
+                }
+            });
+        }
+        drop(tx);
+        // Results are collected in batches: waking this thread for every sample
+        // (thousands a second) would take the cores from the workers.
+        let mut done = false;
+        while !done {
+            std::thread::park_timeout(Duration::from_millis(20));
+            loop {
+                match rx.try_recv() {
+                    Ok(Ok(made)) => {
+                        if error.is_none()
+                            && let Err(e) = collect(made)
+                        {
+                            stop.store(true, Ordering::Relaxed);
+                            error = Some(e);
+                        }
+                        progress.inc();
+                    }
+                    Ok(Err(e)) => {
+                        error.get_or_insert(e);
+                    }
+                    Err(mpsc::TryRecvError::Empty) => break,
+                    Err(mpsc::TryRecvError::Disconnected) => {
+                        done = true;
+                        break;
+                    }
+                }
+            }
+            progress.tick();
+        }
+    });
+    progress.finish();
+    match error {
+        Some(e) => Err(CliError::Failed(format!("{e}\nstopped; the samples written so far are complete, rerun to resume"))),
+        None => Ok(()),
+    }
+}
+
+/// `--unpack SHARD.tar ... --out DIR`.
+fn unpack(shards: &[PathBuf], out: &Path) -> Result<i32, CliError> {
+    prepare_out(out)?;
+    let count = shards::unpack(shards, out).map_err(CliError::Input)?;
+    eprintln!("{}: {count} sample folder(s) from {} shard(s)", out.display(), shards.len());
     Ok(0)
 }
 

@@ -32,7 +32,7 @@ impl Formats {
     }
 
     /// Files a finished sample has for these formats.
-    fn files(&self, name: &str) -> Vec<String> {
+    pub fn files(&self, name: &str) -> Vec<String> {
         let mut out = Vec::new();
         if self.json {
             out.push(format!("{name}_specification.json"));
@@ -141,8 +141,23 @@ fn tmp_name(name: &str) -> String {
     format!(".{name}.tmp-{}", std::process::id())
 }
 
+/// A sample's files as its folder names them (`rand_NNNNNNN_specification.json`,
+/// `design_params.yaml`, ...), in memory.
+pub type Files = Vec<(String, Vec<u8>)>;
+
 /// Make sample `index` and write its folder; returns its record.
 pub fn make(dir: &Path, s: &Settings, arena: &mut garmentcode::Arena, index: u64) -> Result<Record, String> {
+    let (record, files) = draw(s, arena, index)?;
+    if let Some(files) = files {
+        write_folder(dir, &sample_name(index), &files)
+            .map_err(|e| format!("cannot write {}: {e}", dir.join(sample_name(index)).display()))?;
+    }
+    Ok(record)
+}
+
+/// Make sample `index` in memory: its record, and its files unless every attempt
+/// was rejected.
+pub fn draw(s: &Settings, arena: &mut garmentcode::Arena, index: u64) -> Result<(Record, Option<Files>), String> {
     let sampler = s.sampler;
     let body_name = |i: usize| sampler.bodies()[i].name.clone();
     match sampler.draw_in(arena, index) {
@@ -151,14 +166,12 @@ pub fn make(dir: &Path, s: &Settings, arena: &mut garmentcode::Arena, index: u64
                 .into_iter()
                 .map(|r| RejectionRecord { attempt: r.attempt, body: body_name(r.body), reason: r.reason, message: r.message })
                 .collect();
-            Ok(Record { index, accepted: None, rejections })
+            Ok((Record { index, accepted: None, rejections }, None))
         }
         Outcome::Accepted(sample) => {
             let record = record_of(sampler, &sample);
             let files = files_of(s, &sample, &record)?;
-            write_folder(dir, &sample_name(index), &files)
-                .map_err(|e| format!("cannot write {}: {e}", dir.join(sample_name(index)).display()))?;
-            Ok(record)
+            Ok((record, Some(files)))
         }
     }
 }
@@ -191,7 +204,7 @@ fn record_of(sampler: &DatasetSampler, sample: &Sample) -> Record {
 }
 
 /// The files of a sample folder, in memory.
-fn files_of(s: &Settings, sample: &Sample, record: &Record) -> Result<Vec<(String, Vec<u8>)>, String> {
+fn files_of(s: &Settings, sample: &Sample, record: &Record) -> Result<Files, String> {
     let name = sample_name(sample.index);
     let pattern = &sample.built.pattern;
     let fail = |what: &str, e: garmentcode::Error| format!("{name}: cannot write the {what}: {e}");
@@ -218,7 +231,7 @@ fn files_of(s: &Settings, sample: &Sample, record: &Record) -> Result<Vec<(Strin
 
 /// Write files into `.name.tmp-PID`, then rename it to `name`. A folder made
 /// meanwhile by another process counts as done (it holds the same sample).
-fn write_folder(dir: &Path, name: &str, files: &[(String, Vec<u8>)]) -> io::Result<()> {
+pub fn write_folder(dir: &Path, name: &str, files: &[(String, Vec<u8>)]) -> io::Result<()> {
     let tmp = dir.join(tmp_name(name));
     let target = dir.join(name);
     let created = fs::create_dir(&tmp).or_else(|e| {
@@ -267,9 +280,14 @@ fn info_json(s: &Settings, r: &Record) -> String {
 
 /// Read a finished sample's record, checking that it belongs to this dataset.
 fn read_info(path: &Path, s: &Settings, index: u64) -> Result<Record, String> {
-    let show = path.display();
-    let text = fs::read_to_string(path).map_err(|e| format!("{show}: cannot read: {e}"))?;
-    let v: Value = serde_json::from_str(&text).map_err(|e| format!("{show}: {e}"))?;
+    let text = fs::read_to_string(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+    parse_info(&text, &path.display(), s, index)
+}
+
+/// Parse a sample record read from `show` (a file, or a member of a shard),
+/// checking that it belongs to this dataset.
+pub fn parse_info(text: &str, show: &dyn std::fmt::Display, s: &Settings, index: u64) -> Result<Record, String> {
+    let v: Value = serde_json::from_str(text).map_err(|e| format!("{show}: {e}"))?;
     let bad = || format!("{show}: not a sample record of this tool");
     let seed = v["seed"].as_u64().ok_or_else(bad)?;
     if seed != s.sampler.seed() || v["index"].as_u64() != Some(index) {

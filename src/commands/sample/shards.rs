@@ -1,0 +1,354 @@
+//! The shard layout (`--layout shards[:N]`): WebDataset-style tar archives of `N`
+//! samples each. Shard `k` (`shard-00000k.tar`) holds the samples of index
+//! `k·N .. (k+1)·N` of the whole dataset, so a shard's content depends on the seed,
+//! the settings, `N` and `--n` alone, never on `--jobs` or `--shard`.
+//!
+//! Inside a shard every file of a sample is named after its key: the folder
+//! layout's `rand_0000042/rand_0000042_specification.json` becomes
+//! `rand_0000042.specification.json`, `rand_0000042/design_params.yaml` becomes
+//! `rand_0000042.design_params.yaml`, and so on; unpacking reverses the mapping.
+//!
+//! The tar headers are written here rather than with the `tar` crate: the format
+//! needed is one fixed ustar header per regular file (about thirty lines), every
+//! field of it must be pinned for byte-identical shards (mtime 0, uid/gid 0, mode
+//! 0644, no user or group names), and the reader only has to accept what this
+//! writer produces (plus the end-of-archive blocks other tools add), with clear
+//! errors for anything else.
+
+use super::store::{self, Files, Record, Settings};
+use garments::sample::sample_name;
+use std::fs;
+use std::path::{Path, PathBuf};
+
+/// Samples per shard when `--layout shards` gives no `:N`.
+pub const DEFAULT_SIZE: u64 = 1000;
+
+const BLOCK: usize = 512;
+
+/// The file name of shard `k`.
+pub fn shard_name(k: u64) -> String {
+    format!("shard-{k:06}.tar")
+}
+
+/// The shard number of a file name `shard-NNNNNN.tar`.
+fn shard_of(name: &str) -> Option<u64> {
+    let digits = name.strip_prefix("shard-")?.strip_suffix(".tar")?;
+    if digits.len() < 6 || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    digits.parse().ok()
+}
+
+fn tmp_name(k: u64) -> String {
+    format!(".{}.tmp-{}", shard_name(k), std::process::id())
+}
+
+/// The member name of a sample file: `rand_N_x` → `rand_N.x`, `x` → `rand_N.x`.
+fn member_name(key: &str, file: &str) -> String {
+    let rest = file.strip_prefix(key).and_then(|r| r.strip_prefix('_')).unwrap_or(file);
+    format!("{key}.{rest}")
+}
+
+/// The folder file name of a member's suffix: the inverse of [`member_name`].
+fn folder_file_name(key: &str, rest: &str) -> String {
+    if rest == "specification.json" || rest.starts_with("pattern.") { format!("{key}_{rest}") } else { rest.to_string() }
+}
+
+/// Split a member name into its sample index, key and suffix.
+fn split_member(name: &str) -> Option<(u64, &str, &str)> {
+    let (key, rest) = name.split_once('.')?;
+    let index = store::index_of(key)?;
+    (!rest.is_empty() && !rest.contains('/')).then_some((index, key, rest))
+}
+
+/// Write `value` as zero-padded octal into `field`, ending with NUL.
+fn octal(field: &mut [u8], value: u64) {
+    let digits = field.len() - 1;
+    let text = format!("{value:0digits$o}");
+    field[..digits].copy_from_slice(text.as_bytes());
+    field[digits] = 0;
+}
+
+/// One ustar header block for a regular file.
+fn header(name: &str, size: u64) -> Result<[u8; BLOCK], String> {
+    let mut h = [0u8; BLOCK];
+    if name.len() > 100 {
+        return Err(format!("{name}: a member name longer than 100 bytes"));
+    }
+    h[..name.len()].copy_from_slice(name.as_bytes());
+    octal(&mut h[100..108], 0o644);
+    octal(&mut h[108..116], 0);
+    octal(&mut h[116..124], 0);
+    octal(&mut h[124..136], size);
+    octal(&mut h[136..148], 0);
+    h[156] = b'0';
+    h[257..263].copy_from_slice(b"ustar\0");
+    h[263..265].copy_from_slice(b"00");
+    octal(&mut h[329..337], 0);
+    octal(&mut h[337..345], 0);
+    h[148..156].fill(b' ');
+    let sum: u64 = h.iter().map(|&b| u64::from(b)).sum();
+    octal(&mut h[148..155], sum);
+    h[155] = b' ';
+    Ok(h)
+}
+
+/// A tar archive of `members` (name, bytes) in the order given.
+fn tar(members: &[(String, &[u8])]) -> Result<Vec<u8>, String> {
+    let mut out = Vec::new();
+    for (name, bytes) in members {
+        out.extend_from_slice(&header(name, bytes.len() as u64)?);
+        out.extend_from_slice(bytes);
+        out.resize(out.len().next_multiple_of(BLOCK), 0);
+    }
+    out.resize(out.len() + 2 * BLOCK, 0);
+    Ok(out)
+}
+
+/// The value of an octal header field.
+fn read_octal(field: &[u8]) -> Option<u64> {
+    let text = std::str::from_utf8(field).ok()?.trim_matches(|c: char| c == '\0' || c == ' ');
+    if text.is_empty() {
+        return Some(0);
+    }
+    u64::from_str_radix(text, 8).ok()
+}
+
+/// The regular files of a ustar archive, in order. Errors name what is wrong
+/// (not a tar file, a bad checksum, a truncated member).
+fn untar(bytes: &[u8]) -> Result<Vec<(String, &[u8])>, String> {
+    let mut out = Vec::new();
+    let mut at = 0;
+    loop {
+        let Some(h) = bytes.get(at..at + BLOCK) else {
+            return Err(if at == 0 {
+                "not a tar archive (too short)".into()
+            } else {
+                "truncated: the archive ends without its end blocks".into()
+            });
+        };
+        if h.iter().all(|&b| b == 0) {
+            return Ok(out);
+        }
+        if &h[257..262] != b"ustar" {
+            return Err(format!("not a tar archive (no ustar header at byte {at})"));
+        }
+        let stored = read_octal(&h[148..156]).ok_or("a header with an unreadable checksum")?;
+        let sum: u64 = h.iter().enumerate().map(|(i, &b)| if (148..156).contains(&i) { u64::from(b' ') } else { u64::from(b) }).sum();
+        if stored != sum {
+            return Err(format!("a damaged header at byte {at} (checksum)"));
+        }
+        let cut = |f: &[u8]| String::from_utf8_lossy(&f[..f.iter().position(|&b| b == 0).unwrap_or(f.len())]).into_owned();
+        let (prefix, name) = (cut(&h[345..500]), cut(&h[..100]));
+        let name = if prefix.is_empty() { name } else { format!("{prefix}/{name}") };
+        let size = read_octal(&h[124..136]).ok_or_else(|| format!("{name}: an unreadable size"))? as usize;
+        let start = at + BLOCK;
+        let data = bytes.get(start..start + size).ok_or_else(|| format!("{name}: truncated (the archive ends inside it)"))?;
+        match h[156] {
+            b'0' | 0 => out.push((name, data)),
+            b'5' => {}
+            other => return Err(format!("{name}: not a regular file (tar type '{}')", other as char)),
+        }
+        at = start + size.next_multiple_of(BLOCK);
+    }
+}
+
+/// Sample indices of shard `k`: `k·size .. min((k+1)·size, n)`.
+pub fn range(k: u64, size: u64, n: u64) -> std::ops::Range<u64> {
+    (k * size).min(n)..((k + 1) * size).min(n)
+}
+
+/// Write shard `k` of `samples` (sorted by index) into `dir`: into a temporary
+/// file first, renamed whole.
+pub fn write_shard(dir: &Path, k: u64, samples: &[(u64, Files)]) -> Result<(), String> {
+    let mut members: Vec<(String, &[u8])> = Vec::new();
+    for (index, files) in samples {
+        let key = sample_name(*index);
+        let mut own: Vec<(String, &[u8])> = files.iter().map(|(f, b)| (member_name(&key, f), b.as_slice())).collect();
+        own.sort_by(|a, b| a.0.cmp(&b.0));
+        members.extend(own);
+    }
+    let bytes = tar(&members)?;
+    let (tmp, target) = (dir.join(tmp_name(k)), dir.join(shard_name(k)));
+    let result = fs::write(&tmp, bytes).and_then(|_| fs::rename(&tmp, &target));
+    if let Err(e) = result {
+        let _ = fs::remove_file(&tmp);
+        return Err(format!("cannot write {}: {e}", target.display()));
+    }
+    Ok(())
+}
+
+/// One line of the index: a sample's key, shard and garment.
+pub fn index_line(record: &Record, size: u64) -> Option<String> {
+    let a = record.accepted.as_ref()?;
+    let v = serde_json::json!({
+        "key": sample_name(record.index),
+        "shard": shard_name(record.index / size),
+        "type": a.main,
+        "upper": a.upper,
+        "waistband": a.waistband,
+        "bottom": a.bottom,
+        "styles": a.styles,
+        "body": a.body,
+        "panels": a.panels,
+    });
+    Some(v.to_string() + "\n")
+}
+
+/// The index file's name, per task as the summary's.
+pub fn index_file_name(shard: Option<(u64, u64)>) -> String {
+    match shard {
+        None => "index.jsonl".into(),
+        Some((i, k)) => format!("index_shard_{i}_of_{k}.jsonl"),
+    }
+}
+
+/// What a dataset folder already holds for the shards of this run.
+pub struct Existing {
+    /// Finished shards.
+    pub done: Vec<u64>,
+    /// Records of the accepted samples of finished shards.
+    pub records: Vec<Record>,
+    /// Indices of finished shards that have no sample (every attempt rejected).
+    pub missing: Vec<u64>,
+    /// Stale temporary shards removed.
+    pub removed_temps: usize,
+}
+
+/// Scan `dir`: check each finished shard of this run (`wanted`, below `shards`)
+/// belongs to this dataset, read its records, and remove stale temporaries.
+pub fn scan(dir: &Path, s: &Settings, n: u64, size: u64, wanted: impl Fn(u64) -> bool) -> Result<Existing, String> {
+    let shards = n.div_ceil(size);
+    let mut existing = Existing { done: Vec::new(), records: Vec::new(), missing: Vec::new(), removed_temps: 0 };
+    let mut stale: Vec<PathBuf> = Vec::new();
+    let entries = fs::read_dir(dir).map_err(|e| format!("{}: cannot list: {e}", dir.display()))?;
+    for entry in entries {
+        let entry = entry.map_err(|e| format!("{}: cannot list: {e}", dir.display()))?;
+        let file_name = entry.file_name();
+        let Some(name) = file_name.to_str() else { continue };
+        if let Some(rest) = name.strip_prefix('.')
+            && let Some((shard, _pid)) = rest.split_once(".tmp-")
+            && shard_of(shard).is_some_and(&wanted)
+        {
+            stale.push(entry.path());
+            continue;
+        }
+        let Some(k) = shard_of(name) else { continue };
+        if k >= shards || !wanted(k) {
+            continue;
+        }
+        let path = entry.path();
+        let records = check_shard(&path, s, range(k, size, n))?;
+        let have: std::collections::HashSet<u64> = records.iter().map(|r| r.index).collect();
+        existing.missing.extend(range(k, size, n).filter(|i| !have.contains(i)));
+        existing.records.extend(records);
+        existing.done.push(k);
+    }
+    for t in stale {
+        fs::remove_file(&t).map_err(|e| format!("{}: cannot remove a stale temporary shard: {e}", t.display()))?;
+        existing.removed_temps += 1;
+    }
+    existing.done.sort_unstable();
+    existing.records.sort_by_key(|r| r.index);
+    Ok(existing)
+}
+
+/// Read a finished shard: every member a file of a sample in `range`, every
+/// sample with its record (of this dataset) and the files of these formats.
+fn check_shard(path: &Path, s: &Settings, range: std::ops::Range<u64>) -> Result<Vec<Record>, String> {
+    let show = path.display();
+    let bytes = fs::read(path).map_err(|e| format!("{show}: cannot read: {e}"))?;
+    let members = untar(&bytes).map_err(|e| format!("{show}: a damaged shard ({e}); delete it and rerun to make it again"))?;
+    let mut keys: std::collections::BTreeMap<u64, Vec<&str>> = std::collections::BTreeMap::new();
+    let mut records = Vec::new();
+    for (name, data) in &members {
+        let Some((index, _key, rest)) = split_member(name) else {
+            return Err(format!("{show}: '{name}' is not a sample file of this tool; choose another --out"));
+        };
+        if !range.contains(&index) {
+            return Err(format!(
+                "{show}: holds {} outside this shard's samples {}..{}: the dataset was made with another shard size or --n; choose another --out or the same --layout and --n",
+                sample_name(index),
+                range.start,
+                range.end
+            ));
+        }
+        keys.entry(index).or_default().push(rest);
+        if rest == store::INFO {
+            let text = std::str::from_utf8(data).map_err(|_| format!("{show}: {name} is not text"))?;
+            records.push(store::parse_info(text, &format_args!("{show}: {name}"), s, index)?);
+        }
+    }
+    for (index, rests) in &keys {
+        let key = sample_name(*index);
+        let have = |f: &str| rests.iter().any(|r| folder_file_name(&key, r) == f);
+        if !have(store::INFO) {
+            return Err(format!("{show}: {key} has no {}; delete the shard and rerun", store::INFO));
+        }
+        if let Some(f) = s.formats.files(&key).into_iter().find(|f| !have(f)) {
+            return Err(format!(
+                "{show}: {key} has no {}: the dataset was made with other --formats; resume with the same --formats or choose another --out",
+                member_name(&key, &f)
+            ));
+        }
+    }
+    Ok(records)
+}
+
+/// `--unpack SHARD.tar ... --out DIR`: each sample of the shards as its folder
+/// (written as the folder layout writes it). Returns the number of samples.
+pub fn unpack(shards: &[PathBuf], out: &Path) -> Result<usize, String> {
+    let mut count = 0;
+    for path in shards {
+        let show = path.display();
+        let bytes = fs::read(path).map_err(|e| format!("{show}: cannot read: {e}"))?;
+        let members = untar(&bytes).map_err(|e| format!("{show}: {e}"))?;
+        let mut samples: std::collections::BTreeMap<u64, (String, Files)> = std::collections::BTreeMap::new();
+        for (name, data) in members {
+            let (index, key, rest) =
+                split_member(&name).ok_or_else(|| format!("{show}: '{name}' is not a sample file of a garmentcode shard"))?;
+            let entry = samples.entry(index).or_insert_with(|| (key.to_string(), Vec::new()));
+            entry.1.push((folder_file_name(key, rest), data.to_vec()));
+        }
+        if samples.is_empty() {
+            return Err(format!("{show}: holds no sample"));
+        }
+        for (key, files) in samples.values() {
+            store::write_folder(out, key, files).map_err(|e| format!("cannot write {}: {e}", out.join(key).display()))?;
+            count += 1;
+        }
+    }
+    Ok(count)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_map_both_ways() {
+        let key = "rand_0000042";
+        for f in ["rand_0000042_specification.json", "rand_0000042_pattern.svg", "design_params.yaml", "sample_info.json"] {
+            let m = member_name(key, f);
+            let (index, k, rest) = split_member(&m).unwrap();
+            assert_eq!((index, k), (42, key));
+            assert_eq!(folder_file_name(key, rest), f);
+        }
+        assert_eq!(member_name(key, "rand_0000042_specification.json"), "rand_0000042.specification.json");
+    }
+
+    #[test]
+    fn archives_read_back_and_damage_is_found() {
+        let a = b"hello".to_vec();
+        let b = vec![7u8; 1300];
+        let bytes = tar(&[("x.a".into(), &a), ("x.b".into(), &b)]).unwrap();
+        assert_eq!(bytes.len() % BLOCK, 0);
+        let back = untar(&bytes).unwrap();
+        assert_eq!(back, vec![("x.a".to_string(), a.as_slice()), ("x.b".to_string(), b.as_slice())]);
+        assert!(untar(&bytes[..bytes.len() - 1500]).unwrap_err().contains("truncated"));
+        let mut bad = bytes.clone();
+        bad[3] ^= 1;
+        assert!(untar(&bad).unwrap_err().contains("checksum"));
+        assert!(untar(b"{\"not\": \"a tar\"}").unwrap_err().contains("not a tar"));
+    }
+}
