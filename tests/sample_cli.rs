@@ -292,3 +292,161 @@ fn bad_input_is_refused_before_any_work() {
     assert_eq!(r.status.code(), Some(2));
     assert_eq!(tree(&out), before);
 }
+
+/// The members of a tar archive: name and header fields (mode, uid, gid, mtime as
+/// written) and size.
+fn members(tar: &[u8]) -> Vec<(String, [String; 4], usize)> {
+    let mut out = Vec::new();
+    let mut at = 0;
+    while tar[at..at + 512].iter().any(|&b| b != 0) {
+        let h = &tar[at..at + 512];
+        let text = |r: std::ops::Range<usize>| String::from_utf8(h[r].iter().copied().take_while(|&b| b != 0).collect()).unwrap();
+        let size = usize::from_str_radix(&text(124..135), 8).unwrap();
+        out.push((text(0..100), [text(100..107), text(108..115), text(116..123), text(136..147)], size));
+        at += 512 + size.next_multiple_of(512);
+    }
+    out
+}
+
+/// The shard files of a folder, by name.
+fn shard_files(dir: &Path) -> BTreeMap<String, Vec<u8>> {
+    tree(dir).into_iter().filter(|(k, _)| k.starts_with("shard-")).collect()
+}
+
+#[test]
+fn shards_hold_the_folder_dataset_and_unpack_to_it() {
+    let dir = scratch("shard_layout");
+    let (folders, sharded, unpacked) = (dir.join("folders"), dir.join("sharded"), dir.join("unpacked"));
+    sample_ok(&["--n", "25", "--seed", "5", "--out", s(&folders), "--formats", "json,svg"]);
+    sample_ok(&["--n", "25", "--seed", "5", "--out", s(&sharded), "--formats", "json,svg", "--layout", "shards:10"]);
+    let shards = shard_files(&sharded);
+    assert_eq!(shards.keys().collect::<Vec<_>>(), ["shard-000000.tar", "shard-000001.tar", "shard-000002.tar"]);
+
+    // Shard 1 holds samples 10..19, five files each, sorted by key, fixed headers.
+    let list = members(&shards["shard-000001.tar"]);
+    let names: Vec<&str> = list.iter().map(|m| m.0.as_str()).collect();
+    let mut sorted = names.clone();
+    sorted.sort();
+    assert_eq!(names, sorted);
+    assert_eq!(names.len(), 50);
+    for suffix in ["specification.json", "pattern.svg", "design_params.yaml", "body_measurements.yaml", "sample_info.json"] {
+        for i in 10..20 {
+            assert!(names.contains(&format!("rand_{i:07}.{suffix}").as_str()), "shard 1 lacks rand_{i:07}.{suffix}");
+        }
+    }
+    for (name, fields, _) in &list {
+        assert_eq!(fields, &["0000644", "0000000", "0000000", "00000000000"].map(String::from), "{name}");
+    }
+    // A member's bytes are the folder's file.
+    let info = fs::read(folders.join("rand_0000012/sample_info.json")).unwrap();
+    assert!(shards["shard-000001.tar"].windows(info.len()).any(|w| w == info));
+
+    // The index: one line per sample with its shard, type and panels as recorded.
+    let index = fs::read_to_string(sharded.join("index.jsonl")).unwrap();
+    assert_eq!(index.lines().count(), 25);
+    for line in index.lines() {
+        let v: serde_json::Value = serde_json::from_str(line).unwrap();
+        let key = v["key"].as_str().unwrap();
+        let i: u64 = key[5..].parse().unwrap();
+        assert_eq!(v["shard"], format!("shard-{:06}.tar", i / 10));
+        let info: serde_json::Value =
+            serde_json::from_str(&fs::read_to_string(folders.join(key).join("sample_info.json")).unwrap()).unwrap();
+        assert_eq!(v["type"], info["garment"]["main"]);
+        assert_eq!(v["panels"], info["garment"]["panels"]);
+    }
+
+    // Unpacked, the shards are the folder layout byte for byte; the summaries agree
+    // but for the run section.
+    let mut args = vec!["--unpack"];
+    let paths: Vec<String> = shards.keys().map(|k| s(&sharded.join(k)).to_string()).collect();
+    args.extend(paths.iter().map(String::as_str));
+    args.extend(["--out", s(&unpacked)]);
+    sample_ok(&args);
+    assert_eq!(samples(&unpacked), samples(&folders));
+    assert_whole(&unpacked, 5);
+    assert_eq!(tree(&sharded)["dataset_properties.yaml"], tree(&folders)["dataset_properties.yaml"]);
+}
+
+#[test]
+fn shards_are_the_same_whatever_jobs_and_shard() {
+    let dir = scratch("shard_determinism");
+    let (one, two, split) = (dir.join("one"), dir.join("two"), dir.join("split"));
+    let base = ["--n", "23", "--seed", "8", "--layout", "shards:6"];
+    sample_ok(&[&base[..], &["--out", s(&one), "--jobs", "1"]].concat());
+    sample_ok(&[&base[..], &["--out", s(&two), "--jobs", "2"]].concat());
+    sample_ok(&[&base[..], &["--out", s(&split), "--jobs", "2", "--shard", "1/2"]].concat());
+    // Task 1 of 2 writes shards 1 and 3 only.
+    assert_eq!(shard_files(&split).keys().collect::<Vec<_>>(), ["shard-000001.tar", "shard-000003.tar"]);
+    assert!(split.join("index_shard_1_of_2.jsonl").is_file() && split.join("dataset_properties_shard_1_of_2.yaml").is_file());
+    sample_ok(&[&base[..], &["--out", s(&split), "--jobs", "1", "--shard", "0/2"]].concat());
+    let expected = shard_files(&one);
+    assert_eq!(expected.len(), 4);
+    assert_eq!(shard_files(&two), expected, "--jobs 2 made other shards than --jobs 1");
+    assert_eq!(shard_files(&split), expected, "--shard 0/2 + 1/2 made other shards than one run");
+    // The two tasks' indexes together are the whole index.
+    let whole = fs::read_to_string(one.join("index.jsonl")).unwrap();
+    let mut lines: Vec<String> = ["index_shard_0_of_2.jsonl", "index_shard_1_of_2.jsonl"]
+        .iter()
+        .flat_map(|f| fs::read_to_string(split.join(f)).unwrap().lines().map(String::from).collect::<Vec<_>>())
+        .collect();
+    lines.sort();
+    assert_eq!(lines, whole.lines().map(String::from).collect::<Vec<_>>());
+}
+
+#[test]
+fn a_sharded_run_resumes_shard_by_shard() {
+    let dir = scratch("shard_resume");
+    let out = dir.join("data");
+    let args = ["--n", "25", "--seed", "6", "--layout", "shards:10", "--out", s(&out)];
+    sample_ok(&args);
+    let before = tree(&out);
+    // Shard 1 deleted, a temporary of shard 2 and one of shard 1 left behind.
+    fs::remove_file(out.join("shard-000001.tar")).unwrap();
+    fs::write(out.join(".shard-000001.tar.tmp-99999"), b"half a shard").unwrap();
+    fs::write(out.join(".shard-000002.tar.tmp-99998"), b"half a shard").unwrap();
+    let err = sample_ok(&args);
+    assert!(err.contains("removed 2 unfinished shard(s)"), "{err}");
+    assert!(err.contains("resuming: 2 of 3 shards already made"), "{err}");
+    assert!(err.contains("(10 made"), "only shard 1 is made again: {err}");
+    assert_eq!(tree(&out), before, "the resumed dataset differs from the uninterrupted one");
+    assert!(fs::read_dir(&out).unwrap().all(|e| !e.unwrap().file_name().to_string_lossy().starts_with('.')));
+    // Nothing to do: every shard is checked and kept.
+    let err = sample_ok(&args);
+    assert!(err.contains("(0 made"), "{err}");
+}
+
+#[test]
+fn bad_shard_input_is_a_clear_error() {
+    let dir = scratch("shard_errors");
+    let out = dir.join("data");
+    for (layout, says) in [("shards:0", "shards:N with N >= 1"), ("shards:x", "--layout"), ("tiles", "--layout")] {
+        let r = sample(&["--n", "2", "--seed", "1", "--out", s(&out), "--layout", layout]);
+        let err = String::from_utf8_lossy(&r.stderr);
+        assert_eq!(r.status.code(), Some(2), "{layout}: {err}");
+        assert!(err.contains(says), "{layout}: {err}");
+    }
+    let args = ["--n", "12", "--seed", "1", "--layout", "shards:5", "--out", s(&out)];
+    sample_ok(&args);
+    let fail = |args: &[&str], says: &str| {
+        let r = sample(args);
+        let err = String::from_utf8_lossy(&r.stderr).into_owned();
+        assert_eq!(r.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(says), "{args:?}: {err}");
+    };
+    // Another shard size into the same folder.
+    fail(&["--n", "12", "--seed", "1", "--layout", "shards:4", "--out", s(&out)], "another shard size");
+    // Another seed.
+    fail(&["--n", "12", "--seed", "2", "--layout", "shards:5", "--out", s(&out)], "seed 1, not 2");
+    // A damaged shard is named, and left for the user to delete.
+    let shard = out.join("shard-000001.tar");
+    let bytes = fs::read(&shard).unwrap();
+    fs::write(&shard, &bytes[..bytes.len() / 2]).unwrap();
+    fail(&args, "shard-000001.tar: a damaged shard");
+    assert!(shard.is_file());
+    // Unpacking what is not a shard.
+    let not_tar = dir.join("notes.json");
+    fs::write(&not_tar, "{\"not\": \"a tar archive, but long enough to hold a header block of 512 bytes\"}".repeat(10)).unwrap();
+    fail(&["--unpack", s(&not_tar), "--out", s(&dir.join("u1"))], "not a tar archive");
+    fail(&["--unpack", s(&dir.join("missing.tar")), "--out", s(&dir.join("u2"))], "cannot read");
+    fail(&["--unpack", s(&shard), "--out", s(&dir.join("u3")), "--n", "3"], "cannot be used with");
+}
