@@ -30,6 +30,8 @@ pub mod error;
 pub mod interface;
 pub mod intersect;
 pub mod math;
+#[cfg(feature = "mesh")]
+pub mod mesh;
 mod memo;
 pub mod ops;
 pub mod panel;
