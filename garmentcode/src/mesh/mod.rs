@@ -373,7 +373,8 @@ impl BoxMesh {
                 return Err(MeshError::DegeneratePanel { panel: p.name.clone(), reason: "the outline encloses no area".into() });
             }
             let faces = if counter_clockwise { tri.faces } else { tri.faces.into_iter().map(|[a, b, c]| [a, c, b]).collect() };
-            let rotation = p.rotation().matrix();
+            // The reference's mesher reads the angles as `Rz·Ry·Rx` (its readers' convention).
+            let rotation = crate::rotation::matrix_zyx_from_degrees(p.rotation);
             let n_local = tri.points.len();
             panels.push(PanelMesh {
                 name: p.name.clone(),

@@ -8,7 +8,7 @@
 //! the mesh is refined again, so every inside edge ends up at most `1.43·res` long
 //! (the reference mesher's size criterion).
 
-use std::collections::VecDeque;
+use std::collections::{HashMap, VecDeque};
 
 use spade::handles::{FixedFaceHandle, InnerTag};
 use spade::{AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation};
@@ -16,6 +16,7 @@ use spade::{AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementPara
 use crate::math::Vec2;
 
 type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
+type VertexHandle<'a> = spade::handles::VertexHandle<'a, Point2<f64>, (), spade::CdtEdge<()>, ()>;
 
 /// Size bound of triangle edges, in units of the resolution.
 pub const SIZE_BOUND: f64 = 1.43;
@@ -38,11 +39,7 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) 
         let h = cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("point ({}, {}) cannot be triangulated: {e:?}", p.x, p.y))?;
         handle.push(h);
     }
-    for &[a, b] in segments {
-        if handle[a] != handle[b] {
-            cdt.add_constraint_and_split(handle[a], handle[b], |p| p);
-        }
-    }
+    let mut crossing = add_outline(&mut cdt, &handle, segments);
     let max_len = SIZE_BOUND * res;
     // Area of an equilateral triangle somewhat below the size bound: CGAL's size
     // criterion yields triangles of about this size.
@@ -53,7 +50,6 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) 
         RefinementParameters::<f64>::new()
             .with_angle_limit(AngleLimit::from_radius_to_shortest_edge_ratio(2f64.sqrt()))
             .with_max_allowed_area(max_area)
-            .keep_constraint_edges()
             .exclude_outer_faces(true)
             .with_max_additional_vertices(budget)
     };
@@ -86,6 +82,49 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) 
         cdt.refine(params());
     }
 
+    // Points the refinement put on the outline (on a constraint) are dropped and the
+    // panel triangulated afresh from the outline and the interior points.
+    let is_input = {
+        let mut v = vec![false; cdt.num_vertices()];
+        handle.iter().for_each(|h| v[h.index()] = true);
+        v
+    };
+    // On the outline: an end of a constraint, or within 1% of the resolution of a
+    // constraint edge opposite to it in one of its triangles.
+    let eps = 0.01 * res;
+    let on_outline = |v: VertexHandle| {
+        v.out_edges().any(|e| {
+            if e.is_constraint_edge() {
+                return true;
+            }
+            let opposite = e.next();
+            !e.face().is_outer() && opposite.is_constraint_edge() && {
+                let [a, b] = [opposite.from().position(), opposite.to().position()];
+                segment_distance(v.position(), a, b) < eps
+            }
+        })
+    };
+    if cdt.vertices().any(|v| !is_input[v.fix().index()] && on_outline(v)) {
+        let inside = inside_faces(&cdt);
+        let mut used = vec![false; cdt.num_vertices()];
+        for f in &inside {
+            for v in cdt.face(*f).vertices() {
+                used[v.fix().index()] = true;
+            }
+        }
+        let interior: Vec<Point2<f64>> =
+            cdt.vertices().filter(|v| used[v.fix().index()] && !is_input[v.fix().index()] && !on_outline(*v)).map(|v| v.position()).collect();
+        cdt = Cdt::new();
+        handle.clear();
+        for p in boundary {
+            handle.push(cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("point cannot be triangulated: {e:?}"))?);
+        }
+        crossing = add_outline(&mut cdt, &handle, segments);
+        for p in interior {
+            cdt.insert(p).map_err(|e| format!("interior point cannot be inserted: {e:?}"))?;
+        }
+    }
+
     let inside = inside_faces(&cdt);
     // Spade vertex index → output index: boundary vertices keep theirs, added vertices
     // used by inside faces are numbered after them in insertion order.
@@ -101,6 +140,11 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) 
             used[v.fix().index()] = true;
         }
     }
+    // A crossing of two outline segments is no vertex of its own: like the reference,
+    // it stands for the start of the segment whose insertion created it.
+    for (&v, &a) in &crossing {
+        map[v] = a;
+    }
     let mut points = boundary.to_vec();
     for (i, v) in cdt.vertices().enumerate() {
         if map[i] == usize::MAX && used[i] {
@@ -109,8 +153,35 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) 
             points.push(Vec2::new(p.x, p.y));
         }
     }
-    let faces = inside.iter().map(|f| cdt.face(*f).vertices().map(|v| map[v.fix().index()])).collect();
+    let mut seen = std::collections::HashSet::new();
+    let faces = inside
+        .iter()
+        .map(|f| cdt.face(*f).vertices().map(|v| map[v.fix().index()]))
+        .filter(|[a, b, c]| a != b && b != c && a != c)
+        .filter(|f| {
+            let mut key = *f;
+            key.sort_unstable();
+            seen.insert(key)
+        })
+        .collect();
     Ok(PanelTriangulation { points, faces })
+}
+
+/// Adds the outline segments as constraints, splitting crossing ones; returns the
+/// vertices created at crossings, each with the local id of the segment start that
+/// created it.
+fn add_outline(cdt: &mut Cdt, handle: &[spade::handles::FixedVertexHandle], segments: &[[usize; 2]]) -> HashMap<usize, usize> {
+    let mut crossing = HashMap::new();
+    for &[a, b] in segments {
+        if handle[a] != handle[b] {
+            let before = cdt.num_vertices();
+            cdt.add_constraint_and_split(handle[a], handle[b], |p| p);
+            for v in before..cdt.num_vertices() {
+                crossing.insert(v, a);
+            }
+        }
+    }
+    crossing
 }
 
 /// Inner faces inside the outline by the even–odd rule: a face's level is the number of
@@ -142,6 +213,14 @@ fn inside_faces(cdt: &Cdt) -> Vec<FixedFaceHandle<InnerTag>> {
         }
     }
     cdt.inner_faces().filter(|f| parity[f.fix().index()] == Some(true)).map(|f| f.fix()).collect()
+}
+
+/// Distance of `p` to the segment `a b`.
+fn segment_distance(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
+    let (p, a, b) = (Vec2::new(p.x, p.y), Vec2::new(a.x, a.y), Vec2::new(b.x, b.y));
+    let d = b - a;
+    let t = if d.length_squared() > 0.0 { ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
+    (p - (a + t * d)).length()
 }
 
 fn bbox_area(points: &[Vec2]) -> f64 {
