@@ -367,12 +367,19 @@ impl BoxMesh {
             let counter_clockwise = outline_orientation(p, &samples)?;
             let segments: Vec<[usize; 2]> = edges.iter().flat_map(|e| e.local.windows(2).map(|w| [w[0], w[1]])).collect();
             let n_boundary = points.len();
-            let tri = triangulate::triangulate(&points, &segments, resolution)
+            // A clockwise panel is triangulated mirrored (x → −x, exact) and mirrored back, so
+            // that the mesh of a mirrored panel is exactly the mirror of the panel's mesh; the
+            // triangles, counter-clockwise in the mirror, come out wound like the outline.
+            let mirror = |q: &Vec2| if counter_clockwise { *q } else { Vec2::new(-q.x, q.y) };
+            let input: Vec<Vec2> = points.iter().map(mirror).collect();
+            let mut tri = triangulate::triangulate(&input, &segments, resolution)
                 .map_err(|reason| MeshError::DegeneratePanel { panel: p.name.clone(), reason })?;
             if tri.faces.is_empty() {
                 return Err(MeshError::DegeneratePanel { panel: p.name.clone(), reason: "the outline encloses no area".into() });
             }
-            let faces = if counter_clockwise { tri.faces } else { tri.faces.into_iter().map(|[a, b, c]| [a, c, b]).collect() };
+            tri.points[..n_boundary].copy_from_slice(&points);
+            tri.points[n_boundary..].iter_mut().for_each(|q| *q = mirror(q));
+            let faces = tri.faces;
             // The reference's mesher reads the angles as `Rz·Ry·Rx` (its readers' convention).
             let rotation = crate::rotation::matrix_zyx_from_degrees(p.rotation);
             let n_local = tri.points.len();
