@@ -1,6 +1,7 @@
 //! Box-mesh generation (`garmentcode::mesh::BoxMesh::new`) at the default resolution on
-//! the patterns of the reference mesh cases (`tests/data/mesh`); the reference's BoxMesh
-//! needs a median 1.15 s of CPU per garment for the same step.
+//! the patterns of the reference cases (`../tests/data/cases`, every case with a
+//! specification); the reference's BoxMesh needs a median 1.15 s of CPU per garment for
+//! the same step.
 //!
 //! `cargo bench -p garmentcode --bench mesh` prints divan's figures per garment, then the
 //! per-garment distribution over all cases (median of 11 runs each): median, 99th
@@ -12,14 +13,15 @@ use garmentcode::Pattern;
 use garmentcode::mesh::{BoxMesh, DEFAULT_RESOLUTION};
 
 fn cases() -> Vec<(String, Pattern)> {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/mesh");
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/cases");
     let mut names: Vec<String> =
         std::fs::read_dir(dir).expect("mesh cases").map(|e| e.expect("entry").file_name().to_string_lossy().into_owned()).collect();
     names.sort();
     names
         .into_iter()
+        .filter(|n| std::path::Path::new(&format!("{dir}/{n}/specification.json")).exists())
         .map(|n| {
-            let text = std::fs::read_to_string(format!("{dir}/{n}/{n}_specification.json")).expect("specification");
+            let text = std::fs::read_to_string(format!("{dir}/{n}/specification.json")).expect("specification");
             let mut p = Pattern::from_json(&text).expect("pattern");
             p.name = n.clone();
             (n, p)

@@ -43,7 +43,7 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) 
     let max_len = SIZE_BOUND * res;
     // Area of an equilateral triangle somewhat below the size bound: CGAL's size
     // criterion yields triangles of about this size.
-    let max_area = 3f64.sqrt() / 4.0 * (0.95 * max_len).powi(2);
+    let max_area = 3f64.sqrt() / 4.0 * (0.85 * max_len).powi(2);
     let region = bbox_area(boundary);
     let budget = (8.0 * region / (res * res)) as usize + 10 * boundary.len() + 1000;
     let params = || {
@@ -114,14 +114,23 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) 
         }
         let interior: Vec<Point2<f64>> =
             cdt.vertices().filter(|v| used[v.fix().index()] && !is_input[v.fix().index()] && !on_outline(*v)).map(|v| v.position()).collect();
-        cdt = Cdt::new();
-        handle.clear();
-        for p in boundary {
-            handle.push(cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("point cannot be triangulated: {e:?}"))?);
-        }
-        crossing = add_outline(&mut cdt, &handle, segments);
-        for p in interior {
-            cdt.insert(p).map_err(|e| format!("interior point cannot be inserted: {e:?}"))?;
+        let distinct = handle.iter().enumerate().all(|(i, h)| h.index() == i);
+        if crossing.is_empty() && distinct {
+            // Outline without crossings or repeated points: bulk loading keeps the vertex order.
+            let mut all: Vec<Point2<f64>> = boundary.iter().map(|p| Point2::new(p.x, p.y)).collect();
+            all.extend(interior);
+            let edges: Vec<[usize; 2]> = segments.iter().copied().filter(|[a, b]| a != b).collect();
+            cdt = Cdt::bulk_load_cdt(all, edges).map_err(|e| format!("panel cannot be triangulated: {e:?}"))?;
+        } else {
+            cdt = Cdt::new();
+            handle.clear();
+            for p in boundary {
+                handle.push(cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("point cannot be triangulated: {e:?}"))?);
+            }
+            crossing = add_outline(&mut cdt, &handle, segments);
+            for p in interior {
+                cdt.insert(p).map_err(|e| format!("interior point cannot be inserted: {e:?}"))?;
+            }
         }
     }
 
