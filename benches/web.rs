@@ -14,8 +14,7 @@
 use std::sync::OnceLock;
 use std::time::Instant;
 
-use garmentcode::params::{Sampler, Value, sample_rng};
-use garmentcode::{DesignSpace, Params};
+use garmentcode::{DesignSpace, Params, Sampler, Value, sample_rng};
 use garmentcode_cli::web::api::{body_json, route};
 use garmentcode_cli::web::http::Request;
 use garments::Design;

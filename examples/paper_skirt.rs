@@ -39,8 +39,8 @@ use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 
 use garmentcode::draw::{DrawOptions, to_svg};
+use garmentcode::io::{read_design, write_design};
 use garmentcode::ops::distribute_y;
-use garmentcode::params::{read_design, write_design};
 use garmentcode::slots::Top;
 use garmentcode::{
     Arena, Body, EdgeSeq, InterfaceId, PanelId, Params, PartExt, Rotation, Slot, SlotExt, StitchRule, Vec2, Vec3, component,

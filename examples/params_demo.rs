@@ -3,8 +3,8 @@
 //!
 //! `cargo run --example params_demo`
 
-use garmentcode::params::{Sampler, read_design, sample_rng, write_design};
-use garmentcode::{Choice, Params};
+use garmentcode::io::{read_design, write_design};
+use garmentcode::{Choice, Params, Sampler, sample_rng};
 
 /// How the hem is finished.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Choice)]

@@ -2,3 +2,14 @@
 //! binary, its integration tests and its benchmark.
 
 pub mod web;
+
+/// A build warning as users read it: the reference's internal error strings
+/// (`ERROR::IncorrectParams::...`, kept verbatim in `checks.json`) explained.
+pub fn explain_warning(w: &str) -> String {
+    match w.split_once("ERROR::IncorrectParams::") {
+        Some((before, what)) => {
+            format!("{before}the reference refuses this combination of parameters ({what}); change one of them to get a valid garment")
+        }
+        None => w.to_string(),
+    }
+}

@@ -1,15 +1,60 @@
-//! Writing an output folder all at once: files are prepared in memory, written into a
-//! temporary sibling folder and moved into place, so a failed run never leaves a
-//! partial folder behind.
+//! Writing output folders. Files are prepared in memory; a folder (`build`,
+//! `render`, `sample --replay`) is written whole into a temporary sibling
+//! `.NAME.tmp-PID` and swapped in, so a folder never mixes two runs' files and a
+//! failed or killed run leaves the previous folder as it was. Leftovers of dead
+//! runs are removed (or, for a folder caught between the two renames of a swap,
+//! put back) by the next run on the same folder.
 
 use std::fs;
 use std::io;
 use std::path::{Path, PathBuf};
 
+/// Names of the files garmentcode writes into an output folder: a folder holding
+/// only these may be replaced without `--force`.
+pub const OWN_FILES: &[&str] =
+    &["specification.json", "pattern.svg", "pattern.png", "design_params.yaml", "body_measurements.yaml", "checks.json", "error.txt"];
+
 /// Files of an output folder, written together.
 #[derive(Default)]
 pub struct OutputSet {
     files: Vec<(String, Vec<u8>)>,
+}
+
+/// Why an output folder was not written.
+#[derive(Debug)]
+pub enum WriteError {
+    /// The folder holds something garmentcode did not write (`--force` replaces it
+    /// when these are files).
+    Foreign {
+        /// Names of a few of the entries.
+        names: Vec<String>,
+        /// Whether `--force` would help (false for sub-folders).
+        forcible: bool,
+    },
+    /// A file system error.
+    Io(io::Error),
+}
+
+impl std::fmt::Display for WriteError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            WriteError::Foreign { names, forcible: true } => write!(
+                f,
+                "the folder holds files garmentcode did not write ({}); choose another folder, or --force to replace it and delete them",
+                names.join(", ")
+            ),
+            WriteError::Foreign { names, forcible: false } => {
+                write!(f, "the folder holds sub-folders ({}); garmentcode does not replace it, choose another folder", names.join(", "))
+            }
+            WriteError::Io(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl From<io::Error> for WriteError {
+    fn from(e: io::Error) -> Self {
+        WriteError::Io(e)
+    }
 }
 
 impl OutputSet {
@@ -18,29 +63,48 @@ impl OutputSet {
         self.files.push((name.to_string(), bytes.into()));
     }
 
-    /// Write every file into `dir`: a new folder appears whole; in an existing
-    /// folder every file is replaced atomically.
-    pub fn write(&self, dir: &Path) -> io::Result<()> {
-        let parent = match dir.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-            _ => PathBuf::from("."),
-        };
+    /// Write the folder `dir` whole: the files go into a temporary sibling folder
+    /// that then replaces `dir`. An existing `dir` must hold only files
+    /// garmentcode writes ([`OWN_FILES`]), unless `force`.
+    pub fn write_folder(&self, dir: &Path, force: bool) -> Result<(), WriteError> {
+        let (parent, base) = split(dir)?;
         fs::create_dir_all(&parent)?;
-        let base = dir.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "out".into());
-        if !dir.exists() {
-            let tmp = parent.join(format!(".{base}.tmp-{}", std::process::id()));
+        clean_leftovers(&parent, &base, dir);
+        if dir.exists() {
+            check_replaceable(dir, force)?;
+        }
+        let pid = std::process::id();
+        let tmp = parent.join(format!(".{base}.tmp-{pid}"));
+        let _ = fs::remove_dir_all(&tmp);
+        fs::create_dir_all(&tmp)?;
+        let written = self.files.iter().try_for_each(|(name, bytes)| fs::write(tmp.join(name), bytes));
+        if let Err(e) = written {
             let _ = fs::remove_dir_all(&tmp);
-            fs::create_dir_all(&tmp)?;
-            let result = self.files.iter().try_for_each(|(name, bytes)| fs::write(tmp.join(name), bytes));
-            if let Err(e) = result.and_then(|_| fs::rename(&tmp, dir)) {
+            return Err(e.into());
+        }
+        if dir.exists() {
+            let old = parent.join(format!(".{base}.old-{pid}"));
+            if let Err(e) = fs::rename(dir, &old) {
                 let _ = fs::remove_dir_all(&tmp);
-                return Err(e);
+                return Err(e.into());
             }
-            return Ok(());
+            if let Err(e) = fs::rename(&tmp, dir) {
+                let _ = fs::rename(&old, dir);
+                let _ = fs::remove_dir_all(&tmp);
+                return Err(e.into());
+            }
+            let _ = fs::remove_dir_all(&old);
+        } else if let Err(e) = fs::rename(&tmp, dir) {
+            let _ = fs::remove_dir_all(&tmp);
+            return Err(e.into());
         }
-        if !dir.is_dir() {
-            return Err(io::Error::new(io::ErrorKind::AlreadyExists, format!("{} exists and is not a folder", dir.display())));
-        }
+        Ok(())
+    }
+
+    /// Write every file into the folder `dir`, which may hold other files (a
+    /// dataset's summary beside its samples): each file is replaced atomically.
+    pub fn write_files_into(&self, dir: &Path) -> io::Result<()> {
+        fs::create_dir_all(dir)?;
         let mut temps = Vec::new();
         for (name, bytes) in &self.files {
             let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
@@ -57,5 +121,142 @@ impl OutputSet {
             fs::rename(tmp, dir.join(name))?;
         }
         Ok(())
+    }
+}
+
+/// Parent folder and name of `dir` (`.` and `..` resolved).
+fn split(dir: &Path) -> io::Result<(PathBuf, String)> {
+    let abs = if dir.exists() { fs::canonicalize(dir)? } else { std::path::absolute(dir)? };
+    let parent = abs.parent().map(Path::to_path_buf).ok_or_else(|| io::Error::other("cannot write over the root folder"))?;
+    let base = abs.file_name().map(|n| n.to_string_lossy().into_owned()).ok_or_else(|| io::Error::other("the folder has no name"))?;
+    Ok((parent, base))
+}
+
+/// Refuse a folder holding entries garmentcode did not write (files allowed
+/// with `force`, sub-folders never).
+fn check_replaceable(dir: &Path, force: bool) -> Result<(), WriteError> {
+    if !dir.is_dir() {
+        return Err(io::Error::new(io::ErrorKind::AlreadyExists, "it exists and is not a folder").into());
+    }
+    let mut files = Vec::new();
+    let mut folders = Vec::new();
+    for e in fs::read_dir(dir)? {
+        let e = e?;
+        let name = e.file_name().to_string_lossy().into_owned();
+        if e.file_type()?.is_dir() {
+            folders.push(name);
+        } else if !OWN_FILES.contains(&name.as_str()) {
+            files.push(name);
+        }
+    }
+    folders.sort();
+    files.sort();
+    if !folders.is_empty() {
+        folders.truncate(3);
+        return Err(WriteError::Foreign { names: folders, forcible: false });
+    }
+    if !files.is_empty() && !force {
+        files.truncate(3);
+        return Err(WriteError::Foreign { names: files, forcible: true });
+    }
+    Ok(())
+}
+
+/// Remove `.NAME.tmp-PID` folders of runs that are no longer alive; a
+/// `.NAME.old-PID` of a dead run is the previous folder caught mid-swap: put it
+/// back if the folder is missing, else remove it.
+fn clean_leftovers(parent: &Path, base: &str, dir: &Path) {
+    let Ok(entries) = fs::read_dir(parent) else { return };
+    for e in entries.flatten() {
+        let name = e.file_name().to_string_lossy().into_owned();
+        let Some(rest) = name.strip_prefix(&format!(".{base}.")) else { continue };
+        let (kind, pid) = match rest.split_once('-') {
+            Some((k @ ("tmp" | "old"), pid)) => (k, pid),
+            _ => continue,
+        };
+        let Ok(pid) = pid.parse::<u32>() else { continue };
+        if pid == std::process::id() || is_alive(pid) {
+            continue;
+        }
+        if kind == "old" && !dir.exists() {
+            let _ = fs::rename(e.path(), dir);
+        } else {
+            let _ = fs::remove_dir_all(e.path());
+        }
+    }
+}
+
+/// Whether a process with this id runs (Linux: `/proc/PID`). Elsewhere every
+/// process counts as alive, so nothing of a possibly running writer is removed.
+fn is_alive(pid: u32) -> bool {
+    let proc = Path::new("/proc");
+    !proc.join("self").exists() || proc.join(pid.to_string()).exists()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let d = std::env::temp_dir().join(format!("garmentcode-output-{}-{name}", std::process::id()));
+        let _ = fs::remove_dir_all(&d);
+        fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    fn set(files: &[&str]) -> OutputSet {
+        let mut s = OutputSet::default();
+        for f in files {
+            s.add(f, f.as_bytes());
+        }
+        s
+    }
+
+    #[test]
+    fn a_folder_is_replaced_whole() {
+        let d = scratch("whole");
+        let out = d.join("out");
+        set(&["specification.json", "pattern.png"]).write_folder(&out, false).unwrap();
+        set(&["specification.json"]).write_folder(&out, false).unwrap();
+        assert!(out.join("specification.json").exists());
+        assert!(!out.join("pattern.png").exists(), "no file of the previous run is left");
+        let names: Vec<_> = fs::read_dir(&d).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(names.len(), 1, "no temporary folder left: {names:?}");
+        fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn foreign_files_need_force_and_folders_are_never_replaced() {
+        let d = scratch("foreign");
+        let out = d.join("out");
+        fs::create_dir_all(&out).unwrap();
+        fs::write(out.join("notes.txt"), "mine").unwrap();
+        let e = set(&["checks.json"]).write_folder(&out, false).unwrap_err();
+        assert!(e.to_string().contains("notes.txt") && e.to_string().contains("--force"), "{e}");
+        assert_eq!(fs::read_to_string(out.join("notes.txt")).unwrap(), "mine");
+        set(&["checks.json"]).write_folder(&out, true).unwrap();
+        assert!(!out.join("notes.txt").exists());
+        fs::create_dir_all(out.join("sub")).unwrap();
+        assert!(matches!(set(&["checks.json"]).write_folder(&out, true), Err(WriteError::Foreign { forcible: false, .. })));
+        fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn leftovers_of_dead_runs_are_cleaned() {
+        let d = scratch("leftovers");
+        let out = d.join("out");
+        // A pid far above any real one on Linux (pid_max is at most 2^22).
+        let dead = 4_000_000_000u32;
+        fs::create_dir_all(d.join(format!(".out.tmp-{dead}"))).unwrap();
+        fs::create_dir_all(d.join(format!(".out.old-{dead}"))).unwrap();
+        fs::write(d.join(format!(".out.old-{dead}/specification.json")), "previous").unwrap();
+        fs::create_dir_all(d.join(format!(".other.tmp-{dead}"))).unwrap();
+        // The folder itself is missing: the old copy is put back, then replaced.
+        set(&["checks.json"]).write_folder(&out, false).unwrap();
+        let mut names: Vec<String> = fs::read_dir(&d).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        names.sort();
+        assert_eq!(names, vec![format!(".other.tmp-{dead}"), "out".to_string()]);
+        assert!(out.join("checks.json").exists() && !out.join("specification.json").exists());
+        fs::remove_dir_all(&d).unwrap();
     }
 }

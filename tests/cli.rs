@@ -78,7 +78,7 @@ fn build_named_designs_and_bodies() {
     assert_ne!(read("flat", "pattern.svg"), read("jumpsuit", "pattern.svg"));
     let o = run(&["build", "--layout", "diagonal", "--out", "bad"], &dir);
     assert_eq!(code(&o), 2);
-    assert!(stderr(&o).contains("placed or flat"));
+    assert!(stderr(&o).contains("possible values: placed, flat"), "{}", stderr(&o));
 }
 
 /// Bad design files: each gives exit 2, names the file, the parameter path and
@@ -113,7 +113,7 @@ fn bad_bodies_and_missing_files_are_refused_clearly() {
     std::fs::write(dir.join("neg.yaml"), "body:\n  height: -3\n").unwrap();
     let o = run(&["build", "--body", "neg.yaml", "--out", "out"], &dir);
     assert_eq!(code(&o), 2);
-    assert!(stderr(&o).contains("body.height") && stderr(&o).contains("positive"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("body.height") && stderr(&o).contains("plausible range"), "{}", stderr(&o));
     let o = run(&["build", "--body", "nobody", "--out", "out"], &dir);
     assert_eq!(code(&o), 2);
     assert!(stderr(&o).contains("mean_all"), "lists the built-in bodies: {}", stderr(&o));
@@ -276,5 +276,139 @@ fn usage_errors() {
     }
     let o = run(&["help"], &dir);
     assert_eq!(code(&o), 0);
-    assert!(stdout(&o).contains("USAGE"));
+    assert!(stdout(&o).contains("Usage:"));
+}
+
+#[test]
+fn command_line_conventions() {
+    let dir = scratch("conventions");
+    let o = run(&["--version"], &dir);
+    assert_eq!(code(&o), 0);
+    assert_eq!(stdout(&o).trim(), format!("garmentcode {}", env!("CARGO_PKG_VERSION")));
+    // Every command's help comes from its definition and lists every flag.
+    let o = run(&["build", "--help"], &dir);
+    assert_eq!(code(&o), 0);
+    for flag in ["-d, --design", "-b, --body", "-o, --out", "-n, --name", "--strict", "--no-png", "--layout", "--force"] {
+        assert!(stdout(&o).contains(flag), "{flag} in {}", stdout(&o));
+    }
+    for cmd in ["schema", "check", "render", "compare", "sample", "serve", "completions"] {
+        let o = run(&[cmd, "--help"], &dir);
+        assert_eq!(code(&o), 0, "{cmd}");
+        assert!(stdout(&o).contains(&format!("Usage: garmentcode {cmd}")), "{cmd}: {}", stdout(&o));
+    }
+    // Unknown flags are named; commands and flags get suggestions.
+    let o = run(&["build", "--ot", "x"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("'--ot'"), "{}", stderr(&o));
+    let o = run(&["biuld"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("similar subcommand exists: 'build'"), "{}", stderr(&o));
+    let o = run(&["build", "--stirct", "-o", "x"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("--strict"), "{}", stderr(&o));
+    // Built-in names: suggestions, and the name of a body file works too.
+    let o = run(&["build", "--design", "t-shrt", "-o", "x"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("did you mean t-shirt?"), "{}", stderr(&o));
+    let o = run(&["build", "--body", "mean_femal", "-o", "x"], &dir);
+    assert!(stderr(&o).contains("did you mean mean_female?"), "{}", stderr(&o));
+    let o = run(&["build", "--body", "mean_all.yaml", "-o", "with_ext", "--no-png"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let o2 = run(&["build", "-b", "mean_all", "-o", "without_ext", "--no-png"], &dir);
+    assert_eq!(code(&o2), 0);
+    let read = |d: &str| std::fs::read(dir.join(d).join("specification.json")).unwrap();
+    assert_eq!(read("with_ext"), read("without_ext"));
+    // Shell completions.
+    for shell in ["bash", "zsh", "fish"] {
+        let o = run(&["completions", shell], &dir);
+        assert_eq!(code(&o), 0, "{shell}");
+        assert!(stdout(&o).contains("garmentcode") && stdout(&o).contains("design"), "{shell}");
+    }
+}
+
+#[test]
+fn schema_reference_yaml_is_a_design_that_builds() {
+    let dir = scratch("schema_builds");
+    let o = run(&["schema"], &dir);
+    assert_eq!(code(&o), 0);
+    std::fs::write(dir.join("schema.yaml"), o.stdout).unwrap();
+    let o = run(&["build", "--design", "schema.yaml", "-o", "out", "--no-png"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let spec: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("out/specification.json")).unwrap()).unwrap();
+    assert!(!spec["pattern"]["panels"].as_object().unwrap().is_empty());
+}
+
+#[test]
+fn check_strict_and_build_strict_agree() {
+    let dir = scratch("strict_agree");
+    for (design, _) in [("t-shirt", 0), ("fitted-dress", 0), ("sundress", 0), ("shirt-dress", 0), ("jumpsuit", 0)] {
+        let b = run(&["build", "--design", design, "--strict", "-o", design, "--no-png"], &dir);
+        let built = code(&b) == 0;
+        let spec = format!("{design}/specification.json");
+        if built {
+            let c = run(&["check", "--strict", &spec], &dir);
+            assert_eq!(code(&c), 0, "{design}: build --strict accepts it, check --strict must too: {}", stdout(&c));
+        }
+    }
+}
+
+#[test]
+fn render_refuses_structural_errors_unless_forced() {
+    let dir = scratch("render_force");
+    assert_eq!(code(&run(&["build", "-o", "t", "--no-png"], &dir)), 0);
+    let mut spec: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("t/specification.json")).unwrap()).unwrap();
+    let panel = spec["pattern"]["panels"].as_object().unwrap().keys().next().unwrap().clone();
+    // Edge 0 ends where edge 2 starts: the outline no longer closes.
+    let e2_start = spec["pattern"]["panels"][&panel]["edges"][2]["endpoints"][0].clone();
+    spec["pattern"]["panels"][&panel]["edges"][0]["endpoints"][1] = e2_start;
+    std::fs::write(dir.join("open.json"), spec.to_string()).unwrap();
+    let c = run(&["check", "open.json"], &dir);
+    assert_eq!(code(&c), 1);
+    assert!(stdout(&c).contains("open_loop"), "{}", stdout(&c));
+    let o = run(&["render", "open.json", "-o", "r"], &dir);
+    assert_eq!(code(&o), 1);
+    assert!(stderr(&o).contains("open_loop") && stderr(&o).contains("--force"), "{}", stderr(&o));
+    assert!(!dir.join("r").exists());
+    let o = run(&["render", "open.json", "-o", "r", "--force"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(dir.join("r/pattern.svg").exists());
+}
+
+#[test]
+fn output_folders_are_replaced_whole_and_foreign_ones_refused() {
+    let dir = scratch("folders");
+    assert_eq!(code(&run(&["build", "-o", "out"], &dir)), 0);
+    assert!(dir.join("out/pattern.png").exists());
+    // A rebuild without the PNG leaves no PNG of the previous design behind.
+    assert_eq!(code(&run(&["build", "--design", "sundress", "-o", "out", "--no-png"], &dir)), 0);
+    assert!(!dir.join("out/pattern.png").exists());
+    // A folder with someone else's files is refused, and left as it was.
+    std::fs::create_dir_all(dir.join("mine")).unwrap();
+    std::fs::write(dir.join("mine/thesis.tex"), "precious").unwrap();
+    let o = run(&["build", "-o", "mine"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("thesis.tex") && stderr(&o).contains("--force"), "{}", stderr(&o));
+    assert_eq!(std::fs::read_to_string(dir.join("mine/thesis.tex")).unwrap(), "precious");
+    let o = run(&["build", "-o", "mine", "--force", "--no-png"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(!dir.join("mine/thesis.tex").exists());
+    // Leftovers of a killed run are removed by the next run on that folder.
+    std::fs::create_dir_all(dir.join(".out.tmp-4000000000")).unwrap();
+    assert_eq!(code(&run(&["build", "-o", "out", "--no-png"], &dir)), 0);
+    assert!(!dir.join(".out.tmp-4000000000").exists());
+}
+
+#[test]
+fn build_warnings_explain_the_references_internal_errors() {
+    let dir = scratch("explained");
+    // A ruffled skirt without a waistband: the reference refuses the combination.
+    let design = "design:\n  meta:\n    upper:\n      v: null\n    wb:\n      v: null\n    bottom:\n      v: Skirt2\n  skirt:\n    ruffle:\n      v: 1.5\n";
+    std::fs::write(dir.join("ruffles.yaml"), design).unwrap();
+    let o = run(&["build", "--design", "ruffles.yaml", "-o", "out", "--no-png"], &dir);
+    assert_eq!(code(&o), 0);
+    let err = stderr(&o);
+    assert!(!err.contains("ERROR::"), "{err}");
+    assert!(err.contains("design filter: the reference refuses this combination of parameters (Skirt2 ruffles + belt)"), "{err}");
+    // checks.json keeps the reference's wording.
+    assert!(std::fs::read_to_string(dir.join("out/checks.json")).unwrap().contains("ERROR::IncorrectParams::Skirt2 ruffles + belt"));
 }

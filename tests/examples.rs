@@ -10,8 +10,7 @@ mod skirt_runtime;
 #[path = "../examples/paper_skirt.rs"]
 mod paper_skirt;
 
-use garmentcode::pattern::{Severity, validate};
-use garmentcode::{Arena, PartExt};
+use garmentcode::{Arena, PartExt, Severity, validate};
 
 #[test]
 fn runtime_skirt_builds_and_fits() {
@@ -42,7 +41,7 @@ fn runtime_skirt_builds_and_fits() {
 
 #[test]
 fn paper_skirt_builds_from_its_design_file() {
-    use garmentcode::params::{read_design, write_design};
+    use garmentcode::io::{read_design, write_design};
     use garmentcode::{Body, Interfaces, Params};
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     let space = paper_skirt::Design::design_space();

@@ -2,8 +2,7 @@
 //! validation without errors, and re-emits to a file that reads back to the same
 //! pattern (bit-exact numbers).
 
-use garmentcode::Pattern;
-use garmentcode::pattern::{Severity, validate};
+use garmentcode::{Pattern, Severity, validate};
 use std::path::PathBuf;
 
 fn cases() -> Vec<PathBuf> {
@@ -48,7 +47,7 @@ fn reference_specs_have_no_errors() {
 
 #[test]
 fn self_intersection_verdicts_agree_with_the_reference() {
-    use garmentcode::pattern::ProblemKind;
+    use garmentcode::ProblemKind;
     let mut flagged = 0;
     for case in cases() {
         let spec = case.join("specification.json");

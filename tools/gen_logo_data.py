@@ -55,7 +55,7 @@ def rust(out_file):
         '//! commands resolved; the zero-length `h0` lines kept). Generated and checked bit',
         '//! for bit by `tools/gen_logo_data.py`.',
         '',
-        'use garmentcode::intersect::Seg;',
+        'use garmentcode::parity::svgpath::Seg;',
         '',
         'const fn l(a: [f64; 2], b: [f64; 2]) -> Seg {',
         '    Seg::Line([a, b])',

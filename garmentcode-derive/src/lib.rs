@@ -2,8 +2,8 @@
 //! parameters (`Params`, `Choice`) and components (`Component`, `#[component]`).
 //!
 //! Shaped like `serde_derive`: attributes are parsed into a model that keeps spans
-//! ([`internals`]), validated with errors at the author's tokens, then code is
-//! generated ([`expand`]). Generated code names the runtime crate through its hidden
+//! (`internals`), validated with errors at the author's tokens, then code is
+//! generated (`expand`). Generated code names the runtime crate through its hidden
 //! re-export `::garmentcode::__private`, so authors depend on `garmentcode` alone.
 //! On an error the macro emits the error plus a minimal impl, so one mistake does not
 //! cascade into unrelated errors.
@@ -16,6 +16,92 @@ use syn::{DeriveInput, parse_macro_input};
 
 /// Design-parameter group: every field is a parameter (`#[param(default = ..)]`
 /// with `range`, `options`, `prob`, `rename`) or a nested group.
+///
+/// # Parameters
+///
+/// A field with `default`, `range`, `options` or `prob` is one parameter; its doc
+/// comment is its description:
+///
+/// - `default = ..`: a number, `true`/`false`, a variant of the field's enum
+///   (`Plain`), or `None` for an `Option<Enum>`;
+/// - `range = lo..=hi` (f64, i64) or `options = [a, b, ..]` (numbers);
+/// - `prob = p`: the probability that sampling keeps the default, in `[0, 1]`;
+/// - `rename = ".."`: the key in design files;
+/// - `null_option = false`: leave `null` out of the written options of an `Option`.
+///
+/// # Nested groups and per-instance overrides
+///
+/// A field without those keys is a nested group (a type deriving `Params`; `rename`
+/// applies). One group type can serve several places of a design, each place
+/// changing some of its parameters with `field(..)` entries on the group field:
+///
+/// - `field(default = ..)`, `field(range = lo..=hi)`, `field(prob = p)` or
+///   `field(prob = None)`, `field(doc = "..")`: a new default, range, sampling
+///   probability or description of the parameter `field` of this instance (an enum
+///   default is written as a path, `Enum::Variant`);
+/// - `field(skip)`: this instance leaves the parameter (or a nested group) out of
+///   its schema; the value stays at the group's default;
+/// - `group(field(..))`: an override of a parameter of a nested group.
+///
+/// Overrides change the schema, the defaults and sampling of that instance only.
+/// They are checked while compiling, at the override's tokens: a field name the
+/// group does not have, a default outside the (possibly new) range, a fractional
+/// default of an i64, a probability outside `[0, 1]`, a range on a non-numeric
+/// parameter, a default, range or probability on a nested group.
+///
+/// ```
+/// use garmentcode::Params;
+/// use garmentcode::Value;
+///
+/// /// A sleeve cuff.
+/// #[derive(Clone, Debug, PartialEq, Params)]
+/// struct Cuff {
+///     /// Gathering of the sleeve into the cuff.
+///     #[param(range = 1..=3, default = 1)]
+///     top_ruffle: f64,
+///     /// Cuff length as a fraction of the arm.
+///     #[param(range = 0.05..=0.9, default = 0.1, prob = 0.7)]
+///     len: f64,
+///     /// Flare of the cuff.
+///     #[param(range = 1..=2, default = 1.2)]
+///     flare: f64,
+/// }
+///
+/// /// A sleeve.
+/// #[derive(Clone, Debug, PartialEq, Params)]
+/// struct Sleeve {
+///     /// Direction of the opening.
+///     #[param(range = -0.9..=0.8, default = 0.1, prob = 1.0)]
+///     opening: f64,
+///     /// Its cuff.
+///     cuff: Cuff,
+/// }
+///
+/// /// Both sleeves: one group type, the left one with other defaults.
+/// #[derive(Clone, Debug, PartialEq, Params)]
+/// struct Design {
+///     /// The right sleeve.
+///     right: Sleeve,
+///     /// The left sleeve.
+///     #[param(
+///         opening(default = 0.2, doc = "Direction of the left opening."),
+///         cuff(top_ruffle(range = 1..=2), len(prob = None), flare(skip))
+///     )]
+///     left: Sleeve,
+/// }
+///
+/// let d = Design::defaults();
+/// assert_eq!((d.right.opening, d.left.opening), (0.1, 0.2));
+/// let space = Design::design_space();
+/// let spec = |path: &str| space.params().iter().find(|p| p.path == path).unwrap().clone();
+/// assert_eq!(spec("left.opening").default, Value::Float(0.2));
+/// assert_eq!(spec("left.cuff.top_ruffle").range.to_string(), "[1.0, 2.0]");
+/// assert_eq!(spec("right.cuff.top_ruffle").range.to_string(), "[1.0, 3.0]");
+/// assert_eq!((spec("left.cuff.len").default_prob, spec("right.cuff.len").default_prob), (None, Some(0.7)));
+/// assert_eq!(spec("left.opening").description, "Direction of the left opening.");
+/// assert!(space.params().iter().all(|p| p.path != "left.cuff.flare"));
+/// assert_eq!(space.params().len(), 8 - 1);
+/// ```
 #[proc_macro_derive(Params, attributes(param))]
 pub fn derive_params(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
@@ -83,6 +169,19 @@ mod expansion {
                 hem: Option<Hem>,
                 #[param(rename = "flare-skirt")]
                 flare: Flare,
+            }
+            "#
+        ));
+    }
+
+    #[test]
+    fn params_with_overrides() {
+        insta::assert_snapshot!(pretty(
+            expand::params::derive,
+            r#"
+            struct Left {
+                #[param(opening(default = 0.2), cuff(top_ruffle(range = 1..=2), kind(default = Some(CuffKind::Band), prob = None)), length(skip))]
+                sleeve: Sleeve,
             }
             "#
         ));

@@ -11,9 +11,9 @@
 
 use crate::edge::{Curve, Edge};
 use crate::error::{Error, Result};
-use crate::interface::InterfaceData;
-use crate::math::{Vec2, close_enough};
-use crate::panel::PanelData;
+use crate::math::{Vec2, Vec3, close_enough};
+use crate::rotation::Rotation;
+use std::ops::{Deref, DerefMut};
 
 /// Identity of a vertex.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -43,6 +43,94 @@ pub(crate) struct EdgeData {
     pub geometric_id: u32,
 }
 
+/// An ordered list of edges.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct EdgeSeq(pub Vec<EdgeId>);
+
+impl Deref for EdgeSeq {
+    type Target = Vec<EdgeId>;
+    fn deref(&self) -> &Vec<EdgeId> {
+        &self.0
+    }
+}
+
+impl DerefMut for EdgeSeq {
+    fn deref_mut(&mut self) -> &mut Vec<EdgeId> {
+        &mut self.0
+    }
+}
+
+impl From<Vec<EdgeId>> for EdgeSeq {
+    fn from(v: Vec<EdgeId>) -> Self {
+        EdgeSeq(v)
+    }
+}
+
+impl From<EdgeId> for EdgeSeq {
+    fn from(e: EdgeId) -> Self {
+        EdgeSeq(vec![e])
+    }
+}
+
+impl<'a> IntoIterator for &'a EdgeSeq {
+    type Item = &'a EdgeId;
+    type IntoIter = std::slice::Iter<'a, EdgeId>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.0.iter()
+    }
+}
+
+/// A stitch between two interfaces, matched edge for edge.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StitchRule {
+    /// First side.
+    pub a: InterfaceId,
+    /// Second side.
+    pub b: InterfaceId,
+}
+
+/// A run of consecutive interface edges `[start, end)` gathered by `coeff`: the
+/// fabric of these edges is `coeff` times longer than the seam it is sewn to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ruffle {
+    /// Gather factor (1 = flat).
+    pub coeff: f64,
+    /// First edge of the section.
+    pub start: usize,
+    /// One past the last edge of the section.
+    pub end: usize,
+}
+
+/// Stored interface.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct InterfaceData {
+    pub edges: EdgeSeq,
+    pub panels: Vec<PanelId>,
+    pub right_wrong: Vec<bool>,
+    /// "Treat this edge as reversed" flags used by stitch matching.
+    pub flipping: Vec<bool>,
+    pub ruffle: Vec<Ruffle>,
+}
+
+/// Stored panel.
+#[derive(Clone, Debug)]
+pub(crate) struct PanelData {
+    pub name: String,
+    pub label: String,
+    pub translation: Vec3,
+    pub rotation: Rotation,
+    pub edges: EdgeSeq,
+    /// The interfaces made over this panel's edges, in creation order (every
+    /// [`Arena::interface`] over the panel adds one; a corner cut updates all of
+    /// them and adds the one over the inserted shape).
+    pub interfaces: Vec<InterfaceId>,
+    /// Stitches inside the panel (darts).
+    pub stitches: Vec<StitchRule>,
+    /// When set, the panel's "length" is this interface's length instead of its
+    /// bounding-box height.
+    pub length_interface: Option<InterfaceId>,
+}
+
 /// Storage of one garment's geometry.
 #[derive(Clone, Debug)]
 pub struct Arena {
@@ -56,6 +144,9 @@ pub struct Arena {
     pub(crate) spare_interfaces: Vec<InterfaceData>,
     /// See [`Arena::stop_at_self_intersection`].
     pub(crate) stop_at_self_intersection: bool,
+    /// Where a linearisation first made a piece whose ends coincide (see
+    /// [`Arena::take_degenerate_linearization`]).
+    degenerate_linearization: std::cell::Cell<Option<Vec2>>,
 }
 
 impl Default for Arena {
@@ -75,6 +166,35 @@ impl Arena {
             labels: vec![String::new()],
             spare_interfaces: Vec::new(),
             stop_at_self_intersection: false,
+            degenerate_linearization: std::cell::Cell::new(None),
+        }
+    }
+
+    /// The reference refuses a garment whenever one of the straight pieces it makes
+    /// while linearising an edge (for a bounding box, a centre, a self-intersection
+    /// check) has coinciding ends, as it refuses any such edge. Linearising through
+    /// the arena records the first such piece; builders call this after each step
+    /// that linearises and fail with the returned error. Taking it clears it.
+    pub fn take_degenerate_linearization(&mut self) -> Option<Error> {
+        self.degenerate_linearization.take().map(|p| Error::DegenerateEdge { x: p.x, y: p.y })
+    }
+
+    /// Record the first piece with coinciding ends among `start`, `interior...`,
+    /// `end` (an edge split at its linearisation points).
+    pub(crate) fn note_linearization(&self, start: Vec2, interior: &[Vec2], end: Vec2) {
+        if interior.is_empty() || self.degenerate_linearization.get().is_some() {
+            return;
+        }
+        let pts = std::iter::once(start).chain(interior.iter().copied()).chain(std::iter::once(end));
+        let mut prev: Option<Vec2> = None;
+        for p in pts {
+            if let Some(q) = prev {
+                if check_distinct(q, p).is_err() {
+                    self.degenerate_linearization.set(Some(q));
+                    return;
+                }
+            }
+            prev = Some(p);
         }
     }
 
@@ -96,6 +216,7 @@ impl Arena {
         // the next garment reuses their buffers.
         self.spare_interfaces.append(&mut self.interfaces);
         self.labels.truncate(1);
+        self.degenerate_linearization.set(None);
     }
 
     // ---- vertices ----
@@ -263,7 +384,9 @@ impl Arena {
     /// Appends them to `out`.
     pub(crate) fn linearized_points_into(&self, e: EdgeId, n: Option<usize>, out: &mut Vec<Vec2>) {
         let g = self.geom(e);
+        let from = out.len();
         g.linearize_into(n.unwrap_or_else(|| g.default_linearization()), out);
+        self.note_linearization(g.start, &out[from..], g.end);
     }
 
     /// Deep copy of edges: new edges and new vertices, with vertex sharing among the
@@ -305,4 +428,31 @@ pub(crate) fn check_distinct(a: Vec2, b: Vec2) -> Result<()> {
         return Err(Error::Geometry(format!("edge with non-finite end points ({a}, {b})")));
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::arena::EdgeSeq;
+    use crate::edge::Curve;
+
+    #[test]
+    fn a_linearisation_piece_with_coinciding_ends_is_refused_as_the_reference_does() {
+        let mut a = Arena::new();
+        // A curve 5e-4 long: valid as an edge, but its ten linearisation pieces are
+        // each shorter than the closeness tolerance.
+        let s = a.vertex(Vec2::new(0.0, 0.0));
+        let e = a.vertex(Vec2::new(5e-4, 0.0));
+        let tiny = a.edge(s, e, Curve::Quadratic(Vec2::new(0.5, 0.2))).unwrap();
+        let seq = EdgeSeq::from(vec![tiny]);
+        let _ = seq.linearized_positions_n(&a, None);
+        let err = a.take_degenerate_linearization().expect("refused");
+        assert!(err.to_string().contains("start and end of an edge should differ"), "{err}");
+        assert!(a.take_degenerate_linearization().is_none(), "taken once");
+        // A normal curve passes.
+        let far = a.vertex(Vec2::new(30.0, 0.0));
+        let normal = a.edge(s, far, Curve::Quadratic(Vec2::new(0.5, 0.2))).unwrap();
+        let _ = EdgeSeq::from(vec![normal]).linearized_positions_n(&a, None);
+        assert!(a.take_degenerate_linearization().is_none());
+    }
 }

@@ -1,89 +1,47 @@
 //! Body measurements, read from the reference's body YAML files, and the derived
 //! values the garment programs use.
 //!
+//! Every measurement is declared once, in the table [`MEASUREMENTS`] (written
+//! with the `measurements!` macro below): its name, unit, description and
+//! plausible range. The [`Body`] struct, reading and writing body files, the
+//! per-measurement checks, and the listings tools show (the web configurator's
+//! schema, the docs) all come from that table; the derived values likewise come
+//! from one table ([`DERIVED_VALUES`]).
+//!
 //! Garments are retargeted to a new body by changing measurements alone, so the
-//! measurements are checked on load: every one must be present and finite, lengths
-//! positive, angles non-negative.
+//! measurements are checked on load: every one must be present, finite and within
+//! its plausible range (adult and child anthropometry with a generous margin), and
+//! the derived values must make sense (the waist above the floor, ...). A value
+//! outside its range is an error that names the range and the likely cause, such
+//! as a length typed in metres.
 
-use crate::yaml::{self, Node, Value as Y};
+use crate::parity::yaml::{self, Node, Value as Y};
 use std::fmt;
 
-/// The measurements of one body, in centimetres and degrees.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Body {
-    /// Waist circumference.
-    pub waist: f64,
-    /// Bust circumference.
-    pub bust: f64,
-    /// Underbust circumference (not used by the garment programs).
-    pub underbust: f64,
-    /// Hip circumference.
-    pub hips: f64,
-    /// Circumference of one thigh at its thickest.
-    pub leg_circ: f64,
-    /// Wrist circumference.
-    pub wrist: f64,
-    /// Back part of the waist circumference, balance line to balance line.
-    pub waist_back_width: f64,
-    /// Back part of the bust circumference.
-    pub back_width: f64,
-    /// Back part of the hip circumference.
-    pub hip_back_width: f64,
-    /// Width of the neck base at the back.
-    pub neck_w: f64,
-    /// Nape of the neck to the waist along the back.
-    pub waist_line: f64,
-    /// Neck base over the bust point to the waist, in front.
-    pub waist_over_bust_line: f64,
-    /// Shoulder level to the bust point.
-    pub bust_line: f64,
-    /// Vertical distance from the nape to the bust level (absent for some bodies).
-    pub vert_bust_line: Option<f64>,
-    /// Shoulder to wrist.
-    pub arm_length: f64,
-    /// Floor to the top of the head.
-    pub height: f64,
-    /// Nape of the neck to the top of the head.
-    pub head_l: f64,
-    /// Between the outer ends of the collarbones.
-    pub shoulder_w: f64,
-    /// Shoulder to the bottom of the armpit, on the back.
-    pub armscye_depth: f64,
-    /// Between the bust apexes.
-    pub bust_points: f64,
-    /// Waist level down to the hip level.
-    pub hips_line: f64,
-    /// Between the apexes of the buttocks.
-    pub bum_points: f64,
-    /// Hip level down to the crotch.
-    pub crotch_hip_diff: f64,
-    /// Waist-to-hip side slope, degrees (0 = vertical).
-    pub hip_inclination: f64,
-    /// Shoulder slope, degrees.
-    pub shoulder_incl: f64,
-    /// Arm abduction of the body's pose, degrees.
-    pub arm_pose_angle: f64,
-    /// Name of the body mesh for simulation (dataset generation), if any.
-    pub body_sample: Option<String>,
+/// One raw body measurement as declared in the body table.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Measurement {
+    /// Key in body files (the reference's name).
+    pub name: &'static str,
+    /// `cm` for lengths, `deg` for angles.
+    pub unit: &'static str,
+    /// What is measured, in a sentence.
+    pub description: &'static str,
+    /// Smallest plausible value (inclusive).
+    pub min: f64,
+    /// Largest plausible value (inclusive).
+    pub max: f64,
+    /// Whether a body file may leave it out.
+    pub optional: bool,
 }
 
-/// Values derived from the measurements, as the reference computes them.
+/// One value derived from the measurements, as declared in the derived table.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Derived {
-    /// Height of the waist above the floor.
-    pub waist_level: f64,
-    /// Height of the hip line above the floor.
-    pub leg_length: f64,
-    /// Sleeve balance line, slightly inside the shoulder width.
-    pub base_sleeve_balance: f64,
-    /// Bust-dart level.
-    pub bust_line: f64,
-    /// Half the hip slope.
-    pub hip_inclination: f64,
-    /// Shoulder slope (not halved, as in the reference).
-    pub shoulder_incl: f64,
-    /// Armhole depth with ease.
-    pub armscye_depth: f64,
+pub struct DerivedValue {
+    /// Key in written body files (`_` + the [`Derived`] field name).
+    pub name: &'static str,
+    /// What it is, in a sentence.
+    pub description: &'static str,
 }
 
 /// A body file that cannot be used.
@@ -95,70 +53,195 @@ pub struct BodyError {
     pub problems: Vec<String>,
 }
 
+/// Problems a [`BodyError`] shows; the rest are counted.
+const MAX_SHOWN: usize = 20;
+
 impl fmt::Display for BodyError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}: ", self.file)?;
-        f.write_str(&self.problems.join("; "))
+        f.write_str(&self.problems.iter().take(MAX_SHOWN).cloned().collect::<Vec<_>>().join("; "))?;
+        if self.problems.len() > MAX_SHOWN {
+            write!(f, "; ... and {} more", self.problems.len() - MAX_SHOWN)?;
+        }
+        Ok(())
     }
 }
 
 impl std::error::Error for BodyError {}
 
-/// Measurement keys in the reference's order; `true` marks angles (may be zero).
-const KEYS: [(&str, bool); 26] = [
-    ("waist", false),
-    ("bust", false),
-    ("underbust", false),
-    ("hips", false),
-    ("leg_circ", false),
-    ("wrist", false),
-    ("waist_back_width", false),
-    ("back_width", false),
-    ("hip_back_width", false),
-    ("neck_w", false),
-    ("waist_line", false),
-    ("waist_over_bust_line", false),
-    ("bust_line", false),
-    ("vert_bust_line", false),
-    ("arm_length", false),
-    ("height", false),
-    ("head_l", false),
-    ("shoulder_w", false),
-    ("armscye_depth", false),
-    ("bust_points", false),
-    ("hips_line", false),
-    ("bum_points", false),
-    ("crotch_hip_diff", false),
-    ("hip_inclination", true),
-    ("shoulder_incl", true),
-    ("arm_pose_angle", true),
-];
+/// A field type of [`Body`]: a required (`f64`) or optional (`Option<f64>`)
+/// measurement.
+trait Slot {
+    const OPTIONAL: bool;
+    fn value(&self) -> Option<f64>;
+    fn from_value(v: Option<f64>) -> Self;
+}
+
+impl Slot for f64 {
+    const OPTIONAL: bool = false;
+    fn value(&self) -> Option<f64> {
+        Some(*self)
+    }
+    fn from_value(v: Option<f64>) -> Self {
+        v.unwrap_or(0.0)
+    }
+}
+
+impl Slot for Option<f64> {
+    const OPTIONAL: bool = true;
+    fn value(&self) -> Option<f64> {
+        *self
+    }
+    fn from_value(v: Option<f64>) -> Self {
+        v
+    }
+}
+
+/// Declares the raw measurements: `name: type = "unit" [min, max] "description";`
+/// generates the [`Body`] struct (one documented field each), the
+/// [`MEASUREMENTS`] table and access by name.
+macro_rules! measurements {
+    ($( $name:ident : $ty:ty = $unit:literal [$min:literal, $max:literal] $desc:literal; )*) => {
+        /// The measurements of one body, in centimetres and degrees.
+        #[derive(Clone, Debug, PartialEq)]
+        pub struct Body {
+            $(
+                #[doc = $desc]
+                #[doc = ""]
+                #[doc = concat!("Unit: ", $unit, "; plausible range ", stringify!($min), " to ", stringify!($max), ".")]
+                pub $name: $ty,
+            )*
+            /// Name of the body mesh for simulation (dataset generation), if any.
+            pub body_sample: Option<String>,
+        }
+
+        /// Every raw measurement, in the reference's order: the one declaration
+        /// that body files, checks and listings are generated from.
+        pub const MEASUREMENTS: &[Measurement] = &[
+            $( Measurement {
+                name: stringify!($name),
+                unit: $unit,
+                description: $desc,
+                min: $min,
+                max: $max,
+                optional: <$ty as Slot>::OPTIONAL,
+            }, )*
+        ];
+
+        impl Body {
+            /// A raw measurement by name: `None` for an unknown name, `Some(None)`
+            /// for an absent optional one.
+            fn slot(&self, name: &str) -> Option<Option<f64>> {
+                match name {
+                    $( stringify!($name) => Some(Slot::value(&self.$name)), )*
+                    _ => None,
+                }
+            }
+
+            /// Set a raw measurement by name; `false` for unknown names.
+            fn set_slot(&mut self, name: &str, v: f64) -> bool {
+                match name {
+                    $( stringify!($name) => self.$name = Slot::from_value(Some(v)), )*
+                    _ => return false,
+                }
+                true
+            }
+
+            /// A body from values in [`MEASUREMENTS`] order.
+            fn from_values(values: &[Option<f64>], body_sample: Option<String>) -> Body {
+                let mut it = values.iter().copied();
+                Body { $( $name: Slot::from_value(it.next().flatten()), )* body_sample }
+            }
+        }
+    };
+}
+
+/// Declares the derived values: `name "description" = |body| expression;`
+/// generates the [`Derived`] struct, [`Body::derived`] and the
+/// [`DERIVED_VALUES`] table.
+macro_rules! derived_values {
+    ($( $name:ident $desc:literal = |$b:ident| $e:expr; )*) => {
+        /// Values derived from the measurements, as the reference computes them.
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        pub struct Derived {
+            $( #[doc = $desc] pub $name: f64, )*
+        }
+
+        /// Every derived value, sorted by name (the order of written body files).
+        pub const DERIVED_VALUES: &[DerivedValue] = &[
+            $( DerivedValue { name: concat!("_", stringify!($name)), description: $desc }, )*
+        ];
+
+        impl Body {
+            /// Derived values.
+            pub fn derived(&self) -> Derived {
+                Derived { $( $name: { let $b = self; $e }, )* }
+            }
+        }
+
+        impl Derived {
+            /// The values in [`DERIVED_VALUES`] order.
+            fn values(&self) -> Vec<f64> {
+                vec![$( self.$name ),*]
+            }
+        }
+    };
+}
+
+// Plausible ranges: human anthropometry (children from about 90 cm tall to very
+// tall or large adults) with a generous margin; the reference's bodies sit well
+// inside them. They exist to catch typing mistakes (metres, millimetres, inches),
+// which would otherwise make garments thousands of times too big or too small.
+measurements! {
+    waist: f64 = "cm" [40.0, 220.0] "Waist circumference.";
+    bust: f64 = "cm" [45.0, 220.0] "Bust circumference.";
+    underbust: f64 = "cm" [40.0, 210.0] "Underbust circumference (not used by the garment programs).";
+    hips: f64 = "cm" [45.0, 230.0] "Hip circumference.";
+    leg_circ: f64 = "cm" [20.0, 130.0] "Circumference of one thigh at its thickest.";
+    wrist: f64 = "cm" [8.0, 35.0] "Wrist circumference.";
+    waist_back_width: f64 = "cm" [15.0, 120.0] "Back part of the waist circumference, balance line to balance line.";
+    back_width: f64 = "cm" [18.0, 120.0] "Back part of the bust circumference.";
+    hip_back_width: f64 = "cm" [18.0, 130.0] "Back part of the hip circumference.";
+    neck_w: f64 = "cm" [6.0, 35.0] "Width of the neck base at the back.";
+    waist_line: f64 = "cm" [15.0, 70.0] "Nape of the neck to the waist along the back.";
+    waist_over_bust_line: f64 = "cm" [15.0, 80.0] "Neck base over the bust point to the waist, in front.";
+    bust_line: f64 = "cm" [8.0, 50.0] "Shoulder level to the bust point.";
+    vert_bust_line: Option<f64> = "cm" [8.0, 50.0] "Vertical distance from the nape to the bust level (absent for some bodies).";
+    arm_length: f64 = "cm" [25.0, 100.0] "Shoulder to wrist.";
+    height: f64 = "cm" [80.0, 250.0] "Floor to the top of the head.";
+    head_l: f64 = "cm" [12.0, 45.0] "Nape of the neck to the top of the head.";
+    shoulder_w: f64 = "cm" [15.0, 65.0] "Between the outer ends of the collarbones.";
+    armscye_depth: f64 = "cm" [6.0, 35.0] "Shoulder to the bottom of the armpit, on the back.";
+    bust_points: f64 = "cm" [6.0, 40.0] "Between the bust apexes.";
+    hips_line: f64 = "cm" [5.0, 45.0] "Waist level down to the hip level.";
+    bum_points: f64 = "cm" [5.0, 40.0] "Between the apexes of the buttocks.";
+    crotch_hip_diff: f64 = "cm" [2.0, 35.0] "Hip level down to the crotch.";
+    hip_inclination: f64 = "deg" [0.0, 35.0] "Waist-to-hip side slope, degrees (0 = vertical).";
+    shoulder_incl: f64 = "deg" [0.0, 45.0] "Shoulder slope, degrees.";
+    arm_pose_angle: f64 = "deg" [0.0, 90.0] "Arm abduction of the body's pose, degrees.";
+}
+
+derived_values! {
+    armscye_depth "Armhole depth with ease." = |b| b.armscye_depth + 2.5;
+    base_sleeve_balance "Sleeve balance line, slightly inside the shoulder width." = |b| b.shoulder_w - 2.0;
+    bust_line "Bust-dart level." = |b| match b.vert_bust_line {
+        Some(v) => (1.0 - 1.0 / 3.0) * v + 1.0 / 3.0 * b.bust_line,
+        None => b.bust_line,
+    };
+    hip_inclination "Half the hip slope." = |b| b.hip_inclination / 2.0;
+    leg_length "Height of the hip line above the floor (waist level − hips line)." = |b| b.height - b.head_l - b.waist_line - b.hips_line;
+    shoulder_incl "Shoulder slope (not halved, as in the reference)." = |b| b.shoulder_incl;
+    waist_level "Height of the waist above the floor (height − head − waist line)." = |b| b.height - b.head_l - b.waist_line;
+}
 
 impl Body {
-    /// Derived values.
-    pub fn derived(&self) -> Derived {
-        let waist_level = self.height - self.head_l - self.waist_line;
-        Derived {
-            waist_level,
-            leg_length: waist_level - self.hips_line,
-            base_sleeve_balance: self.shoulder_w - 2.0,
-            bust_line: match self.vert_bust_line {
-                Some(v) => (1.0 - 1.0 / 3.0) * v + 1.0 / 3.0 * self.bust_line,
-                None => self.bust_line,
-            },
-            hip_inclination: self.hip_inclination / 2.0,
-            shoulder_incl: self.shoulder_incl,
-            armscye_depth: self.armscye_depth + 2.5,
-        }
-    }
-
     /// Read a body file (`body:` mapping of measurements).
     pub fn from_yaml(text: &str, file: &str) -> Result<Body, BodyError> {
         let fail = |p: String| BodyError { file: file.to_string(), problems: vec![p] };
         let doc = yaml::parse(text).map_err(|e| fail(e.to_string()))?;
         let body = doc.get("body").ok_or_else(|| fail("expected a top-level `body:` mapping of measurements".into()))?;
         let pairs = body.as_map().ok_or_else(|| fail("`body` must be a mapping of measurements".into()))?;
-        let mut values: Vec<Option<f64>> = vec![None; KEYS.len()];
+        let mut values: Vec<Option<f64>> = vec![None; MEASUREMENTS.len()];
         let mut body_sample = None;
         let mut problems = Vec::new();
         for (k, v) in pairs {
@@ -174,8 +257,8 @@ impl Body {
             if name.starts_with('_') {
                 continue; // derived values are always recomputed
             }
-            let Some(i) = KEYS.iter().position(|(n, _)| *n == name) else {
-                problems.push(format!("{at}: unknown measurement `{name}`"));
+            let Some(i) = MEASUREMENTS.iter().position(|m| m.name == name) else {
+                problems.push(format!("{at}: unknown measurement `{name}`{}", did_you_mean(name)));
                 continue;
             };
             match v.as_f64() {
@@ -183,13 +266,13 @@ impl Body {
                 _ => problems.push(format!("{at}: body.{name}: expected a number, got {}", describe(v))),
             }
         }
-        for (i, (name, _)) in KEYS.iter().enumerate() {
-            match values[i] {
-                None if *name == "vert_bust_line" => {}
-                None => problems.push(format!("body.{name}: missing measurement")),
+        for (m, value) in MEASUREMENTS.iter().zip(&values) {
+            match value {
+                None if m.optional => {}
+                None => problems.push(format!("body.{}: missing measurement ({})", m.name, m.description)),
                 Some(x) => {
-                    if let Err(e) = Body::check_measurement(name, x) {
-                        problems.push(format!("body.{name}: {e}"));
+                    if let Err(e) = Body::check_measurement(m.name, *x) {
+                        problems.push(format!("body.{}: {e}", m.name));
                     }
                 }
             }
@@ -197,53 +280,44 @@ impl Body {
         if !problems.is_empty() {
             return Err(BodyError { file: file.to_string(), problems });
         }
-        let g = |n: &str| values[KEYS.iter().position(|(k, _)| *k == n).expect("known key")].unwrap_or(0.0);
-        Ok(Body {
-            waist: g("waist"),
-            bust: g("bust"),
-            underbust: g("underbust"),
-            hips: g("hips"),
-            leg_circ: g("leg_circ"),
-            wrist: g("wrist"),
-            waist_back_width: g("waist_back_width"),
-            back_width: g("back_width"),
-            hip_back_width: g("hip_back_width"),
-            neck_w: g("neck_w"),
-            waist_line: g("waist_line"),
-            waist_over_bust_line: g("waist_over_bust_line"),
-            bust_line: g("bust_line"),
-            vert_bust_line: values[13],
-            arm_length: g("arm_length"),
-            height: g("height"),
-            head_l: g("head_l"),
-            shoulder_w: g("shoulder_w"),
-            armscye_depth: g("armscye_depth"),
-            bust_points: g("bust_points"),
-            hips_line: g("hips_line"),
-            bum_points: g("bum_points"),
-            crotch_hip_diff: g("crotch_hip_diff"),
-            hip_inclination: g("hip_inclination"),
-            shoulder_incl: g("shoulder_incl"),
-            arm_pose_angle: g("arm_pose_angle"),
-            body_sample,
-        })
+        let body = Body::from_values(&values, body_sample);
+        body.check_derived().map_err(|problems| BodyError { file: file.to_string(), problems })?;
+        Ok(body)
+    }
+
+    /// Check what single measurements cannot show: the derived values and the
+    /// back parts of circumferences must make sense together. One line per
+    /// problem.
+    pub fn check_derived(&self) -> Result<(), Vec<String>> {
+        let d = self.derived();
+        let mut problems = Vec::new();
+        if d.waist_level <= 0.0 {
+            problems.push(format!(
+                "height ({}) must exceed head_l + waist_line ({}): the waist would be below the floor",
+                self.height,
+                self.head_l + self.waist_line
+            ));
+        } else if d.leg_length <= 0.0 {
+            problems.push(format!(
+                "height − head_l − waist_line ({}) must exceed hips_line ({}): the hips would be below the floor",
+                d.waist_level, self.hips_line
+            ));
+        }
+        for (part, whole) in [("waist_back_width", "waist"), ("back_width", "bust"), ("hip_back_width", "hips")] {
+            let (p, w) = (self.get(part).unwrap_or(0.0), self.get(whole).unwrap_or(0.0));
+            if p >= w {
+                problems.push(format!("{part} ({p}) must be smaller than {whole} ({w}), of which it is the back part"));
+            }
+        }
+        if problems.is_empty() { Ok(()) } else { Err(problems) }
     }
 
     /// Measurement values by name (the reference's keys), derived ones with `_`.
     pub fn entries(&self) -> Vec<(&'static str, f64)> {
-        let d = self.derived();
-        let mut out = vec![
-            ("_armscye_depth", d.armscye_depth),
-            ("_base_sleeve_balance", d.base_sleeve_balance),
-            ("_bust_line", d.bust_line),
-            ("_hip_inclination", d.hip_inclination),
-            ("_leg_length", d.leg_length),
-            ("_shoulder_incl", d.shoulder_incl),
-            ("_waist_level", d.waist_level),
-        ];
-        for (name, _) in KEYS {
-            if let Some(v) = self.get(name) {
-                out.push((name, v));
+        let mut out: Vec<(&'static str, f64)> = DERIVED_VALUES.iter().map(|d| d.name).zip(self.derived().values()).collect();
+        for m in MEASUREMENTS {
+            if let Some(v) = self.get(m.name) {
+                out.push((m.name, v));
             }
         }
         out
@@ -251,73 +325,12 @@ impl Body {
 
     /// A raw measurement by name.
     pub fn get(&self, name: &str) -> Option<f64> {
-        Some(match name {
-            "waist" => self.waist,
-            "bust" => self.bust,
-            "underbust" => self.underbust,
-            "hips" => self.hips,
-            "leg_circ" => self.leg_circ,
-            "wrist" => self.wrist,
-            "waist_back_width" => self.waist_back_width,
-            "back_width" => self.back_width,
-            "hip_back_width" => self.hip_back_width,
-            "neck_w" => self.neck_w,
-            "waist_line" => self.waist_line,
-            "waist_over_bust_line" => self.waist_over_bust_line,
-            "bust_line" => self.bust_line,
-            "vert_bust_line" => return self.vert_bust_line,
-            "arm_length" => self.arm_length,
-            "height" => self.height,
-            "head_l" => self.head_l,
-            "shoulder_w" => self.shoulder_w,
-            "armscye_depth" => self.armscye_depth,
-            "bust_points" => self.bust_points,
-            "hips_line" => self.hips_line,
-            "bum_points" => self.bum_points,
-            "crotch_hip_diff" => self.crotch_hip_diff,
-            "hip_inclination" => self.hip_inclination,
-            "shoulder_incl" => self.shoulder_incl,
-            "arm_pose_angle" => self.arm_pose_angle,
-            _ => return None,
-        })
+        self.slot(name).flatten()
     }
 
     /// Set a raw measurement by name (for tools); `false` for unknown names.
     pub fn set(&mut self, name: &str, v: f64) -> bool {
-        let slot = match name {
-            "waist" => &mut self.waist,
-            "bust" => &mut self.bust,
-            "underbust" => &mut self.underbust,
-            "hips" => &mut self.hips,
-            "leg_circ" => &mut self.leg_circ,
-            "wrist" => &mut self.wrist,
-            "waist_back_width" => &mut self.waist_back_width,
-            "back_width" => &mut self.back_width,
-            "hip_back_width" => &mut self.hip_back_width,
-            "neck_w" => &mut self.neck_w,
-            "waist_line" => &mut self.waist_line,
-            "waist_over_bust_line" => &mut self.waist_over_bust_line,
-            "bust_line" => &mut self.bust_line,
-            "vert_bust_line" => {
-                self.vert_bust_line = Some(v);
-                return true;
-            }
-            "arm_length" => &mut self.arm_length,
-            "height" => &mut self.height,
-            "head_l" => &mut self.head_l,
-            "shoulder_w" => &mut self.shoulder_w,
-            "armscye_depth" => &mut self.armscye_depth,
-            "bust_points" => &mut self.bust_points,
-            "hips_line" => &mut self.hips_line,
-            "bum_points" => &mut self.bum_points,
-            "crotch_hip_diff" => &mut self.crotch_hip_diff,
-            "hip_inclination" => &mut self.hip_inclination,
-            "shoulder_incl" => &mut self.shoulder_incl,
-            "arm_pose_angle" => &mut self.arm_pose_angle,
-            _ => return false,
-        };
-        *slot = v;
-        true
+        self.set_slot(name, v)
     }
 
     /// The reference's body file layout: `body:` with keys sorted (derived `_` keys
@@ -334,78 +347,159 @@ impl Body {
 
     /// Names of every raw measurement, in the reference's order.
     pub fn measurement_names() -> impl Iterator<Item = &'static str> {
-        KEYS.iter().map(|(n, _)| *n)
+        MEASUREMENTS.iter().map(|m| m.name)
+    }
+
+    /// The declaration of a raw measurement.
+    pub fn measurement(name: &str) -> Option<&'static Measurement> {
+        MEASUREMENTS.iter().find(|m| m.name == name)
     }
 
     /// Whether a measurement is an angle (degrees) rather than a length.
     pub fn is_angle(name: &str) -> bool {
-        KEYS.iter().any(|(n, a)| *n == name && *a)
+        Body::measurement(name).is_some_and(|m| m.unit == "deg")
     }
 
-    /// Check one raw measurement as body files are checked: a known name, a finite
-    /// number, lengths positive, angles non-negative. The error says what is
-    /// allowed (without the name, which the caller prefixes).
+    /// Check one raw measurement as body files are checked: a known name and a
+    /// finite number within the measurement's plausible range. The error says
+    /// what is allowed and, when the value looks like another unit (metres,
+    /// millimetres, inches, radians), what it probably meant (without the name,
+    /// which the caller prefixes).
     pub fn check_measurement(name: &str, x: f64) -> Result<(), String> {
-        let Some((_, angle)) = KEYS.iter().find(|(n, _)| *n == name) else {
-            return Err("unknown measurement".into());
+        let Some(m) = Body::measurement(name) else {
+            return Err(format!("unknown measurement{}", did_you_mean(name)));
         };
         if !x.is_finite() {
             return Err(format!("expected a finite number, got {x}"));
         }
-        if *angle && x < 0.0 {
-            return Err(format!("{x} must not be negative (degrees)"));
+        if (m.min..=m.max).contains(&x) {
+            return Ok(());
         }
-        if !*angle && x <= 0.0 {
-            return Err(format!("{x} must be positive (cm)"));
+        let unit = m.unit;
+        let mut e =
+            format!("{x} {unit} is outside the plausible range {} to {} {unit} ({})", m.min, m.max, m.description.trim_end_matches('.'));
+        let conversions: &[(f64, &str)] = if unit == "cm" {
+            &[(100.0, "metres"), (0.1, "millimetres"), (2.54, "inches")]
+        } else {
+            &[(180.0 / std::f64::consts::PI, "radians")]
+        };
+        if let Some((factor, other)) = conversions.iter().find(|(f, _)| (m.min..=m.max).contains(&(x * f))) {
+            e.push_str(&format!("; it looks like {other}: in {unit} that is {}", round4(x * factor)));
         }
-        Ok(())
+        Err(e)
     }
 
     /// What a raw or derived (`_`-prefixed) measurement is, for tools that show
-    /// them (the same words as the field documentation).
+    /// them.
     pub fn describe_measurement(name: &str) -> Option<&'static str> {
-        Some(match name {
-            "waist" => "Waist circumference.",
-            "bust" => "Bust circumference.",
-            "underbust" => "Underbust circumference (not used by the garment programs).",
-            "hips" => "Hip circumference.",
-            "leg_circ" => "Circumference of one thigh at its thickest.",
-            "wrist" => "Wrist circumference.",
-            "waist_back_width" => "Back part of the waist circumference, balance line to balance line.",
-            "back_width" => "Back part of the bust circumference.",
-            "hip_back_width" => "Back part of the hip circumference.",
-            "neck_w" => "Width of the neck base at the back.",
-            "waist_line" => "Nape of the neck to the waist along the back.",
-            "waist_over_bust_line" => "Neck base over the bust point to the waist, in front.",
-            "bust_line" => "Shoulder level to the bust point.",
-            "vert_bust_line" => "Vertical distance from the nape to the bust level (optional).",
-            "arm_length" => "Shoulder to wrist.",
-            "height" => "Floor to the top of the head.",
-            "head_l" => "Nape of the neck to the top of the head.",
-            "shoulder_w" => "Between the outer ends of the collarbones.",
-            "armscye_depth" => "Shoulder to the bottom of the armpit, on the back.",
-            "bust_points" => "Between the bust apexes.",
-            "hips_line" => "Waist level down to the hip level.",
-            "bum_points" => "Between the apexes of the buttocks.",
-            "crotch_hip_diff" => "Hip level down to the crotch.",
-            "hip_inclination" => "Waist-to-hip side slope, degrees (0 = vertical).",
-            "shoulder_incl" => "Shoulder slope, degrees.",
-            "arm_pose_angle" => "Arm abduction of the body's pose, degrees.",
-            "_waist_level" => "Height of the waist above the floor (height − head − waist line).",
-            "_leg_length" => "Height of the hip line above the floor.",
-            "_base_sleeve_balance" => "Sleeve balance line, slightly inside the shoulder width.",
-            "_bust_line" => "Bust-dart level.",
-            "_hip_inclination" => "Half the hip slope.",
-            "_shoulder_incl" => "Shoulder slope.",
-            "_armscye_depth" => "Armhole depth with ease.",
-            _ => return None,
-        })
+        let raw = MEASUREMENTS.iter().find(|m| m.name == name).map(|m| m.description);
+        raw.or_else(|| DERIVED_VALUES.iter().find(|d| d.name == name).map(|d| d.description))
     }
+}
+
+/// `x` rounded to 4 decimals, for hints.
+fn round4(x: f64) -> f64 {
+    (x * 1e4).round() / 1e4
+}
+
+/// ` (did you mean `NAME`?)` for a measurement name one or two edits away.
+fn did_you_mean(name: &str) -> String {
+    let best = MEASUREMENTS.iter().map(|m| (edit_distance(name, m.name), m.name)).min();
+    match best {
+        Some((d, n)) if d <= 2 => format!(" (did you mean `{n}`?)"),
+        _ => String::new(),
+    }
+}
+
+/// Levenshtein distance (short names only).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().take(64).collect(), b.chars().collect());
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.iter().enumerate() {
+        let mut cur = vec![i + 1];
+        for (j, cb) in b.iter().enumerate() {
+            cur.push((prev[j] + usize::from(ca != cb)).min(prev[j + 1] + 1).min(cur[j] + 1));
+        }
+        prev = cur;
+    }
+    prev[b.len()]
 }
 
 fn describe(n: &Node) -> String {
     match &n.value {
         Y::Str(s) => format!("\"{s}\""),
         other => other.type_name().to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn mean_female() -> String {
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../garments/data/bodies/mean_female.yaml")).unwrap()
+    }
+
+    #[test]
+    fn every_reference_body_is_within_the_plausible_ranges() {
+        for n in ["mean_all", "mean_female", "mean_male", "f_smpl_average_A40", "m_smpl_average_A40"] {
+            let text = std::fs::read_to_string(format!("{}/../garments/data/bodies/{n}.yaml", env!("CARGO_MANIFEST_DIR"))).unwrap();
+            let b = Body::from_yaml(&text, n).unwrap();
+            for m in MEASUREMENTS {
+                if let Some(x) = b.get(m.name) {
+                    assert!(x > m.min && x < m.max, "{n}: {} = {x}", m.name);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_measurement_in_metres_is_refused_with_a_hint() {
+        let text = mean_female();
+        let text =
+            text.lines().map(|l| if l.trim_start().starts_with("leg_circ:") { "  leg_circ: 0.606592" } else { l }).collect::<Vec<_>>();
+        let e = Body::from_yaml(&text.join("\n"), "f.yaml").unwrap_err().to_string();
+        assert!(e.contains("body.leg_circ: 0.606592 cm is outside the plausible range 20 to 130 cm"), "{e}");
+        assert!(e.contains("looks like metres: in cm that is 60.6592"), "{e}");
+    }
+
+    #[test]
+    fn ranges_and_unit_hints() {
+        assert!(Body::check_measurement("height", 170.0).is_ok());
+        assert!(Body::check_measurement("height", 1700.0).unwrap_err().contains("millimetres"));
+        assert!(Body::check_measurement("height", 66.0).unwrap_err().contains("inches: in cm that is 167.64"));
+        assert!(Body::check_measurement("height", 1e6).unwrap_err().contains("outside the plausible range"));
+        assert!(Body::check_measurement("height", 1e-6).is_err());
+        assert!(Body::check_measurement("shoulder_incl", 0.3).is_ok());
+        assert!(Body::check_measurement("arm_pose_angle", 91.0).is_err());
+        assert!(Body::check_measurement("heigth", 1.0).unwrap_err().contains("did you mean `height`"));
+        assert!(Body::check_measurement("height", f64::NAN).is_err());
+    }
+
+    #[test]
+    fn derived_checks_catch_inconsistent_bodies() {
+        let mut b = Body::from_yaml(&mean_female(), "f").unwrap();
+        assert!(b.check_derived().is_ok());
+        b.set("waist_back_width", b.waist + 1.0);
+        let e = b.check_derived().unwrap_err();
+        assert!(e[0].contains("waist_back_width"), "{e:?}");
+    }
+
+    #[test]
+    fn the_tables_drive_the_struct_and_the_files() {
+        let b = Body::from_yaml(&mean_female(), "f").unwrap();
+        let written = b.to_yaml();
+        for m in MEASUREMENTS.iter().filter(|m| !m.optional) {
+            assert!(written.contains(&format!("  {}: ", m.name)), "{}", m.name);
+            assert!(Body::describe_measurement(m.name).is_some());
+        }
+        for d in DERIVED_VALUES {
+            assert!(written.contains(&format!("  {}: ", d.name)), "{}", d.name);
+        }
+        assert_eq!(Body::from_yaml(&written, "again").unwrap(), b);
+        let names: Vec<&str> = DERIVED_VALUES.iter().map(|d| d.name).collect();
+        let mut sorted = names.clone();
+        sorted.sort();
+        assert_eq!(names, sorted);
     }
 }

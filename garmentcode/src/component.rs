@@ -7,13 +7,14 @@
 //! stitches. Placement (translate, rotate about the block's top centre, mirror),
 //! bounding boxes, lengths, labels and assembly are defined once here on [`Node`].
 
+use crate::arena::StitchRule;
 use crate::arena::{Arena, InterfaceId, PanelId};
 use crate::error::{Error, Result};
 use crate::math::Vec3;
 use crate::pattern::Pattern;
-use crate::remap::Remap;
+use crate::remap::{IdMap, Remap};
 use crate::rotation::Rotation;
-use crate::stitch::{StitchRecord, StitchRule};
+use crate::stitch::StitchRecord;
 
 /// What a part is: a single panel or a component with sub-parts.
 #[derive(Clone, Copy)]
@@ -464,4 +465,79 @@ pub fn assemble(a: &mut Arena, root: &Node<'_>, name: &str) -> Result<Pattern> {
         r.records(a, &mut records);
     }
     Ok(Pattern::from_parts(name, specs, records))
+}
+
+impl Arena {
+    /// A deep copy of `part`: new panels (same names, placement and labels), edges
+    /// and vertices, the interfaces over them and the darts, and `part` rebuilt over
+    /// them ([`Remap`]). Rename the copy's panels before assembling both.
+    pub fn copy_part<T: Part + Remap>(&mut self, part: &T) -> T {
+        let mut map = IdMap::default();
+        let panels = part.panel_ids();
+        for &p in &panels {
+            self.copy_panel_geometry(p, &mut map);
+        }
+        // Interfaces may span several panels: link them once every panel is copied.
+        for &p in &panels {
+            self.copy_panel_links(p, &mut map);
+        }
+        part.remap(self, &mut map)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::arena::{EdgeSeq, StitchRule};
+    use crate::math::Vec2;
+
+    fn square(a: &mut Arena, name: &str) -> (PanelId, InterfaceId, InterfaceId) {
+        let pts = [Vec2::new(0.0, 0.0), Vec2::new(10.0, 0.0), Vec2::new(10.0, 10.0), Vec2::new(0.0, 10.0)];
+        let edges = EdgeSeq::from_points(a, &pts, true).unwrap();
+        let p = a.panel_with_edges(name, edges.clone());
+        let bottom = a.interface(p, edges[0]);
+        let top = a.interface(p, edges[2]);
+        (p, bottom, top)
+    }
+
+    #[test]
+    fn a_copied_panel_has_its_own_edges_and_interfaces() {
+        let mut a = Arena::new();
+        let (p, bottom, top) = square(&mut a, "p");
+        let q = p.deep_copy(&mut a);
+        assert_ne!(p, q);
+        assert_eq!(q.name(&a), "p");
+        assert_eq!(q.interfaces(&a).len(), 2);
+        for (orig, copy) in p.interfaces(&a).to_vec().into_iter().zip(q.interfaces(&a).to_vec()) {
+            assert_ne!(orig, copy);
+            assert_eq!(copy.panels(&a), &[q]);
+            assert!(copy.edges(&a).iter().all(|e| q.edges(&a).index_of(*e).is_some()));
+            assert_eq!(a.geom(orig.edges(&a)[0]), a.geom(copy.edges(&a)[0]));
+        }
+        // Moving the copy's vertices leaves the original alone.
+        let v = a.start(q.edges(&a)[0]);
+        a.set_pos(v, Vec2::new(-5.0, -5.0));
+        assert_eq!(a.pos(a.start(p.edges(&a)[0])), Vec2::new(0.0, 0.0));
+        assert_eq!(bottom.panels(&a), &[p]);
+        assert_eq!(top.panels(&a), &[p]);
+    }
+
+    #[test]
+    fn shared_interfaces_stay_shared_and_outside_ids_stay() {
+        let mut a = Arena::new();
+        let (p, bottom, _) = square(&mut a, "p");
+        let (other, other_top, _) = square(&mut a, "other");
+        let seam = StitchRule { a: bottom, b: other_top };
+        let held = vec![bottom, bottom];
+        let mut map = IdMap::default();
+        a.copy_panel_geometry(p, &mut map);
+        a.copy_panel_links(p, &mut map);
+        let held_copy = held.remap(&mut a, &mut map);
+        let seam_copy = seam.remap(&mut a, &mut map);
+        assert_eq!(held_copy[0], held_copy[1]);
+        assert_eq!(Some(held_copy[0]), map.interface(bottom));
+        assert_eq!(seam_copy.a, held_copy[0]);
+        assert_eq!(seam_copy.b, other_top, "an interface of a panel outside the copy is kept");
+        assert_eq!(other.remap(&mut a, &mut map), other);
+    }
 }

@@ -5,22 +5,10 @@
 //! stitch that splits edges updates the interface it was given, and every component
 //! holding that interface sees the split, as in the reference.
 
-use crate::arena::{Arena, EdgeId, InterfaceId, PanelId};
+use crate::arena::EdgeSeq;
+use crate::arena::{Arena, EdgeId, InterfaceData, InterfaceId, PanelId, Ruffle};
 use crate::error::{Error, Result};
 use crate::math::{Vec3, close_enough};
-use crate::seq::EdgeSeq;
-
-/// A run of consecutive interface edges `[start, end)` gathered by `coeff`: the
-/// fabric of these edges is `coeff` times longer than the seam it is sewn to.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ruffle {
-    /// Gather factor (1 = flat).
-    pub coeff: f64,
-    /// First edge of the section.
-    pub start: usize,
-    /// One past the last edge of the section.
-    pub end: usize,
-}
 
 /// Gather factors of a new interface: one for all edges, or one per edge (runs of
 /// equal values become sections).
@@ -36,17 +24,6 @@ impl From<f64> for Gather {
     fn from(v: f64) -> Self {
         Gather::Uniform(v)
     }
-}
-
-/// Stored interface.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct InterfaceData {
-    pub edges: EdgeSeq,
-    pub panels: Vec<PanelId>,
-    pub right_wrong: Vec<bool>,
-    /// "Treat this edge as reversed" flags used by stitch matching.
-    pub flipping: Vec<bool>,
-    pub ruffle: Vec<Ruffle>,
 }
 
 impl Arena {

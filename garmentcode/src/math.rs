@@ -7,9 +7,9 @@
 use crate::error::{Error, Result};
 
 /// 2D point or vector (panel-local coordinates, centimetres).
-pub type Vec2 = glam::DVec2;
+pub(crate) type Vec2 = glam::DVec2;
 /// 3D point or vector (world coordinates, centimetres).
-pub type Vec3 = glam::DVec3;
+pub(crate) type Vec3 = glam::DVec3;
 
 /// `|a - b| < tol`, the reference's default comparison (`tol = 1e-4`).
 #[inline]

@@ -2,15 +2,16 @@
 //! projecting a shape into an edge or onto a corner, distributing copies, and the
 //! sleeve-opening balancing.
 
+use crate::arena::EdgeSeq;
 use crate::arena::{Arena, EdgeId, InterfaceId, PanelId, VertexId};
 use crate::component::{PanelPart, PartExt};
 use crate::edge::{Curve, Segment};
 use crate::error::{Error, Result};
 use crate::intersect;
 use crate::math::{SignumOrZero, Vec2, Vec3, close_enough, cross, norm, vector_angle};
+use crate::parity::svgpath::{Num, Seg, try_intersect_as};
 use crate::remap::Remap;
 use crate::rotation::Rotation;
-use crate::seq::EdgeSeq;
 
 /// Size of a triangular dart besides its width.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -456,10 +457,10 @@ pub fn even_armhole_openings(a: &mut Arena, front: &mut EdgeSeq, back: &mut Edge
     let slope_perp = Vec2::new(-slope.y, slope.x);
     let mid = (s0 + s1) / 2.0;
     let (l0, l1) = (mid - 20.0 * slope_perp, mid + 20.0 * slope_perp);
-    let line = intersect::Seg::Line([[l0.x, l0.y], [l1.x, l1.y]]);
+    let line = Seg::Line([[l0.x, l0.y], [l1.x, l1.y]]);
     let target = intersect::to_seg(&a.geom(cfront.last_edge()).segment());
     // The reference builds this line from Python complex numbers, the curve from numpy ones.
-    let hits = intersect::svg::try_intersect_as(&target, intersect::Num::Numpy, &line, intersect::Num::Python)
+    let hits = try_intersect_as(&target, Num::Numpy, &line, Num::Python)
         .map_err(|e| Error::Geometry(format!("balancing the sleeve openings: {e}")))?;
     if let Some(&(t, _)) = hits.first() {
         if !(close_enough(t, 0.0, tol) || close_enough(t, 1.0, tol)) {

@@ -5,32 +5,13 @@
 //! without the author thinking about loop directions. Pivot changes truncate to whole
 //! centimetres as the reference does, so written vertices match its files.
 
-use crate::arena::{Arena, EdgeId, InterfaceId, PanelId};
+use crate::arena::EdgeSeq;
+use crate::arena::StitchRule;
+use crate::arena::{Arena, EdgeId, InterfaceId, PanelData, PanelId};
 use crate::error::Result;
 use crate::math::{Vec2, Vec3, trunc};
 use crate::ops::{Cut, EdgeSide};
 use crate::rotation::Rotation;
-use crate::seq::EdgeSeq;
-use crate::stitch::StitchRule;
-
-/// Stored panel.
-#[derive(Clone, Debug)]
-pub(crate) struct PanelData {
-    pub name: String,
-    pub label: String,
-    pub translation: Vec3,
-    pub rotation: Rotation,
-    pub edges: EdgeSeq,
-    /// The interfaces made over this panel's edges, in creation order (every
-    /// [`Arena::interface`] over the panel adds one; a corner cut updates all of
-    /// them and adds the one over the inserted shape).
-    pub interfaces: Vec<InterfaceId>,
-    /// Stitches inside the panel (darts).
-    pub stitches: Vec<StitchRule>,
-    /// When set, the panel's "length" is this interface's length instead of its
-    /// bounding-box height.
-    pub length_interface: Option<InterfaceId>,
-}
 
 impl Arena {
     /// A new empty panel at the origin.
@@ -347,6 +328,14 @@ impl PanelId {
     /// is not modified (callers substitute).
     pub fn add_dart(self, a: &mut Arena, shape: &EdgeSeq, edge: EdgeId, offset: f64, side: EdgeSide) -> Result<Cut> {
         let cut = crate::ops::cut_into_edge(a, shape, edge, offset, side)?;
+        if cut.shape.len() < 2 {
+            // A dart narrower than the closeness tolerance collapses to one edge.
+            return Err(crate::Error::Dart(format!(
+                "the dart in panel '{}' is too narrow to cut ({} edge(s) left of its two legs)",
+                self.name(a),
+                cut.shape.len()
+            )));
+        }
         let l0 = a.interface(self, cut.shape[0]);
         let l1 = a.interface(self, cut.shape[1]);
         let rule = StitchRule::new(a, l0, l1)?;
@@ -366,7 +355,7 @@ impl PanelId {
     /// its points, so a crossing stays one).
     pub fn check_outline(self, a: &Arena) -> Result<()> {
         if a.stop_at_self_intersection && self.is_self_intersecting(a) {
-            return Err(crate::Error::SelfIntersecting { panel: self.name(a).to_string() });
+            return Err(crate::error::Error::SelfIntersecting { panel: self.name(a).to_string() });
         }
         Ok(())
     }

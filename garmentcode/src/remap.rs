@@ -4,14 +4,13 @@
 //! components with Python's `deepcopy`).
 //!
 //! `#[derive(Component)]` implements [`Remap`] for components and panel classes;
-//! [`PartExt::deep_copy`](crate::PartExt::deep_copy) and the distributing operators
-//! use it.
+//! [`Arena::copy_part`] (behind [`PartExt::deep_copy`](crate::PartExt::deep_copy) and
+//! the distributing operators) uses it.
 
+use crate::arena::EdgeSeq;
+use crate::arena::PanelData;
+use crate::arena::StitchRule;
 use crate::arena::{Arena, EdgeId, InterfaceId, PanelId};
-use crate::component::{Part, PartExt};
-use crate::panel::PanelData;
-use crate::seq::EdgeSeq;
-use crate::stitch::StitchRule;
 
 /// Old and new ids of one copy: the copied panels, their edges and the interfaces
 /// copied with them.
@@ -127,24 +126,8 @@ impl<T: Remap> Remap for Box<T> {
 }
 
 impl Arena {
-    /// A deep copy of `part`: new panels (same names, placement and labels), edges
-    /// and vertices, the interfaces over them and the darts, and `part` rebuilt over
-    /// them ([`Remap`]). Rename the copy's panels before assembling both.
-    pub fn copy_part<T: Part + Remap>(&mut self, part: &T) -> T {
-        let mut map = IdMap::default();
-        let panels = part.panel_ids();
-        for &p in &panels {
-            self.copy_panel_geometry(p, &mut map);
-        }
-        // Interfaces may span several panels: link them once every panel is copied.
-        for &p in &panels {
-            self.copy_panel_links(p, &mut map);
-        }
-        part.remap(self, &mut map)
-    }
-
     /// A new panel with copies of `p`'s edges (vertex sharing kept).
-    fn copy_panel_geometry(&mut self, p: PanelId, map: &mut IdMap) {
+    pub(crate) fn copy_panel_geometry(&mut self, p: PanelId, map: &mut IdMap) {
         if map.panel(p).is_some() {
             return;
         }
@@ -167,7 +150,7 @@ impl Arena {
     }
 
     /// The copy of `p` gets copies of its interfaces, darts and length interface.
-    fn copy_panel_links(&mut self, p: PanelId, map: &mut IdMap) {
+    pub(crate) fn copy_panel_links(&mut self, p: PanelId, map: &mut IdMap) {
         let Some(new) = map.panel(p) else { return };
         let src = self.pd(p);
         let (interfaces, stitches, length) = (src.interfaces.clone(), src.stitches.clone(), src.length_interface);
@@ -178,61 +161,5 @@ impl Arena {
         d.interfaces = interfaces;
         d.stitches = stitches;
         d.length_interface = length;
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::Vec2;
-
-    fn square(a: &mut Arena, name: &str) -> (PanelId, InterfaceId, InterfaceId) {
-        let pts = [Vec2::new(0.0, 0.0), Vec2::new(10.0, 0.0), Vec2::new(10.0, 10.0), Vec2::new(0.0, 10.0)];
-        let edges = EdgeSeq::from_points(a, &pts, true).unwrap();
-        let p = a.panel_with_edges(name, edges.clone());
-        let bottom = a.interface(p, edges[0]);
-        let top = a.interface(p, edges[2]);
-        (p, bottom, top)
-    }
-
-    #[test]
-    fn a_copied_panel_has_its_own_edges_and_interfaces() {
-        let mut a = Arena::new();
-        let (p, bottom, top) = square(&mut a, "p");
-        let q = p.deep_copy(&mut a);
-        assert_ne!(p, q);
-        assert_eq!(q.name(&a), "p");
-        assert_eq!(q.interfaces(&a).len(), 2);
-        for (orig, copy) in p.interfaces(&a).to_vec().into_iter().zip(q.interfaces(&a).to_vec()) {
-            assert_ne!(orig, copy);
-            assert_eq!(copy.panels(&a), &[q]);
-            assert!(copy.edges(&a).iter().all(|e| q.edges(&a).index_of(*e).is_some()));
-            assert_eq!(a.geom(orig.edges(&a)[0]), a.geom(copy.edges(&a)[0]));
-        }
-        // Moving the copy's vertices leaves the original alone.
-        let v = a.start(q.edges(&a)[0]);
-        a.set_pos(v, Vec2::new(-5.0, -5.0));
-        assert_eq!(a.pos(a.start(p.edges(&a)[0])), Vec2::new(0.0, 0.0));
-        assert_eq!(bottom.panels(&a), &[p]);
-        assert_eq!(top.panels(&a), &[p]);
-    }
-
-    #[test]
-    fn shared_interfaces_stay_shared_and_outside_ids_stay() {
-        let mut a = Arena::new();
-        let (p, bottom, _) = square(&mut a, "p");
-        let (other, other_top, _) = square(&mut a, "other");
-        let seam = StitchRule { a: bottom, b: other_top };
-        let held = vec![bottom, bottom];
-        let mut map = IdMap::default();
-        a.copy_panel_geometry(p, &mut map);
-        a.copy_panel_links(p, &mut map);
-        let held_copy = held.remap(&mut a, &mut map);
-        let seam_copy = seam.remap(&mut a, &mut map);
-        assert_eq!(held_copy[0], held_copy[1]);
-        assert_eq!(Some(held_copy[0]), map.interface(bottom));
-        assert_eq!(seam_copy.a, held_copy[0]);
-        assert_eq!(seam_copy.b, other_top, "an interface of a panel outside the copy is kept");
-        assert_eq!(other.remap(&mut a, &mut map), other);
     }
 }

@@ -6,48 +6,10 @@
 //! in the reference; a sequence is a list of edge ids, so slicing or copying the list
 //! never copies geometry (use [`EdgeSeq::copy`] for that).
 
-use crate::arena::{Arena, EdgeId, VertexId};
+use crate::arena::{Arena, EdgeId, EdgeSeq, VertexId};
 use crate::edge::Curve;
 use crate::error::{Error, Result};
 use crate::math::{Vec2, norm, rotate2d};
-use std::ops::{Deref, DerefMut};
-
-/// An ordered list of edges.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct EdgeSeq(pub Vec<EdgeId>);
-
-impl Deref for EdgeSeq {
-    type Target = Vec<EdgeId>;
-    fn deref(&self) -> &Vec<EdgeId> {
-        &self.0
-    }
-}
-
-impl DerefMut for EdgeSeq {
-    fn deref_mut(&mut self) -> &mut Vec<EdgeId> {
-        &mut self.0
-    }
-}
-
-impl From<Vec<EdgeId>> for EdgeSeq {
-    fn from(v: Vec<EdgeId>) -> Self {
-        EdgeSeq(v)
-    }
-}
-
-impl From<EdgeId> for EdgeSeq {
-    fn from(e: EdgeId) -> Self {
-        EdgeSeq(vec![e])
-    }
-}
-
-impl<'a> IntoIterator for &'a EdgeSeq {
-    type Item = &'a EdgeId;
-    type IntoIter = std::slice::Iter<'a, EdgeId>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.0.iter()
-    }
-}
 
 impl EdgeSeq {
     /// An empty sequence.

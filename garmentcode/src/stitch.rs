@@ -6,18 +6,9 @@
 //! the same number of edges with the same fractions. Matching happens immediately,
 //! so the order in which a program creates stitches shapes the geometry.
 
-use crate::arena::{Arena, InterfaceId};
+use crate::arena::{Arena, InterfaceId, StitchRule};
 use crate::error::{Error, Result};
 use crate::math::close_enough;
-
-/// A stitch between two interfaces, matched edge for edge.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct StitchRule {
-    /// First side.
-    pub a: InterfaceId,
-    /// Second side.
-    pub b: InterfaceId,
-}
 
 /// One written stitch: panel name and edge index on each side.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]

@@ -1,7 +1,8 @@
 //! The parameter derives: schema, defaults, typed access, design files and sampling.
 
-use garmentcode::params::{Kind, Range, Sampler, Value, read_design, sample_rng, write_design};
-use garmentcode::{Choice, Params};
+use garmentcode::{Choice, Kind, Params, Range, Sampler, Value, sample_rng};
+
+use garmentcode::io::{read_design, write_design};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Choice)]
 enum Style {

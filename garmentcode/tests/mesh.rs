@@ -13,7 +13,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use garmentcode::mesh::{BoxMesh, DEFAULT_RESOLUTION, MeshError, PanelMesh, SIZE_BOUND, VertexLabel, read_obj, read_segmentation};
-use garmentcode::pattern::Curvature;
+use garmentcode::Curvature;
 use garmentcode::{Pattern, Vec2, Vec3};
 use serde_json::Value;
 

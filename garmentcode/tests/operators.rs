@@ -7,10 +7,9 @@ use garmentcode::ops::{
     CornerCut, Cut, DartSize, EdgeSide, ShapeOrder, cut_corner, cut_into_edge, cut_many_into_edge, dart_shape, distribute_horizontally,
     distribute_y, side_with_cut,
 };
-use garmentcode::pattern::{Severity, validate};
 use garmentcode::{
-    Align, Arena, Component, Curve, Edge, EdgeSeq, Gather, InterfaceId, Interfaces, PanelId, PartExt, Pattern, Rotation, StitchRule, Vec2,
-    Vec3,
+    Align, Arena, Component, Curve, Edge, EdgeSeq, Gather, InterfaceId, Interfaces, PanelId, PartExt, Pattern, Rotation, Severity,
+    StitchRule, Vec2, Vec3, validate,
 };
 
 fn v2(x: f64, y: f64) -> Vec2 {

@@ -2,7 +2,7 @@
 //! from a fixed-seed generator (so failures reproduce), each checked for an
 //! invariant the runtime promises.
 
-use garmentcode::arc::cy_from_three_points;
+use garmentcode::curves::cy_from_three_points;
 use garmentcode::math::{abs_to_rel, rel_to_abs};
 use garmentcode::{Arena, Curve, Edge, EdgeSeq, Gather, PanelId, Rotation, StitchRule, Vec2, Vec3};
 use rand_chacha::ChaCha8Rng;

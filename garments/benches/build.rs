@@ -14,8 +14,8 @@
 use std::sync::OnceLock;
 use std::time::Instant;
 
-use garmentcode::params::{Sampler, read_design, sample_rng, write_design};
-use garmentcode::{Arena, Body, DesignSpace, Params};
+use garmentcode::io::{read_design, write_design};
+use garmentcode::{Arena, Body, DesignSpace, Params, Sampler, sample_rng};
 use garments::Design;
 
 /// Designs in the fixed set.

@@ -3,7 +3,7 @@
 //!
 //! `cargo run -p garments --example build_cases -- tests/data/cases out/cases`
 
-use garmentcode::params::read_design;
+use garmentcode::io::read_design;
 use garmentcode::{Arena, Params, PartExt};
 use garments::{Design, MetaGarment, builtin};
 use std::path::Path;

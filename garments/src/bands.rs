@@ -2,7 +2,8 @@
 
 use crate::circle_skirt::CircleArcPanel;
 use crate::common::{v2, v3};
-use crate::design::{CuffKind, Design};
+use crate::design::{self, CuffKind};
+use crate::shared::{Fit, GatherTo};
 use crate::skirt_paneled::SkirtPanel;
 use garmentcode::math::lerp;
 use garmentcode::slots::{Bottom, Left, Right, Top};
@@ -29,16 +30,15 @@ pub struct StraightBandPanel {
 }
 
 impl StraightBandPanel {
-    /// A `width × depth` band; `match_int_proportion` proportions the gathers of its
-    /// long sides to a body measure.
-    pub fn new(a: &mut Arena, name: &str, width: f64, depth: f64, match_int_proportion: Option<f64>) -> Result<StraightBandPanel> {
+    /// A `width × depth` band whose long sides are gathered to `gather`.
+    pub fn new(a: &mut Arena, name: &str, width: f64, depth: f64, gather: GatherTo) -> Result<StraightBandPanel> {
         let edges = EdgeSeq::from_points(a, &[v2(0.0, 0.0), v2(0.0, depth), v2(width, depth), v2(width, 0.0)], true)?;
         let panel = a.panel_with_edges(name, edges.clone());
-        let ruffle = match_int_proportion.map(|m| width / m).unwrap_or(1.0);
+        let ruffle = |m: Option<f64>| m.map(|m| width / m).unwrap_or(1.0);
         let right = a.interface(panel, edges[0]);
-        let top = a.interface_gathered(panel, edges[1], ruffle)?.reverse(a, true);
+        let top = a.interface_gathered(panel, edges[1], ruffle(gather.top))?.reverse(a, true);
         let left = a.interface(panel, edges[2]);
-        let bottom = a.interface_gathered(panel, edges[3], ruffle)?;
+        let bottom = a.interface_gathered(panel, edges[3], ruffle(gather.bottom))?;
         panel.top_center_pivot(a);
         panel.center_x(a);
         Ok(StraightBandPanel { panel, right, top, left, bottom })
@@ -100,10 +100,9 @@ pub struct Waistband {
 }
 
 impl Waistband {
-    /// A straight (`fitted = false`) or curved band sitting on top of a bottom
-    /// garment at `rise`.
-    pub fn new(a: &mut Arena, body: &Body, design: &Design, rise: f64, fitted: bool) -> Result<Waistband> {
-        let d = &design.waistband;
+    /// A straight (loose) or curved (fitted) band from the `waistband` group, sitting
+    /// on top of a bottom garment at `rise`.
+    pub fn new(a: &mut Arena, body: &Body, d: &design::Waistband, rise: f64, fit: Fit) -> Result<Waistband> {
         let waist = d.waist * body.waist;
         let waist_back_frac = body.waist_back_width / body.waist;
         let hips = body.hips * d.waist;
@@ -116,10 +115,11 @@ impl Waistband {
         let top_width = lerp(hips, waist, rise + width)?;
         let top_back_fraction = lerp(hips_back_frac, waist_back_frac, rise + width)?;
         width *= body.hips_line;
-        let (front, back) = if !fitted {
+        let (front, back) = if fit == Fit::Loose {
             let back_width = top_width * top_back_fraction;
-            let f = StraightBandPanel::new(a, "wb_front", top_width - back_width, width, Some(body.waist - body.waist_back_width))?;
-            let b = StraightBandPanel::new(a, "wb_back", back_width, width, Some(body.waist_back_width))?;
+            let f =
+                StraightBandPanel::new(a, "wb_front", top_width - back_width, width, GatherTo::both(body.waist - body.waist_back_width))?;
+            let b = StraightBandPanel::new(a, "wb_back", back_width, width, GatherTo::both(body.waist_back_width))?;
             (BandPanel::Straight(f), BandPanel::Straight(b))
         } else {
             let bottom_width = lerp(hips, waist, rise)?;
@@ -131,8 +131,7 @@ impl Waistband {
                 width,
                 top_width * (1.0 - top_back_fraction),
                 bottom_width * (1.0 - bottom_back_fraction),
-                Some(m),
-                Some(m),
+                GatherTo::both(m),
             )?;
             let m = body.waist_back_width;
             let b = CircleArcPanel::from_all_length(
@@ -141,8 +140,7 @@ impl Waistband {
                 width,
                 top_width * top_back_fraction,
                 bottom_width * bottom_back_fraction,
-                Some(m),
-                Some(m),
+                GatherTo::both(m),
             )?;
             (BandPanel::Curved(f), BandPanel::Curved(b))
         };
@@ -157,7 +155,11 @@ impl Waistband {
         let bottom = a.interface_from(&[fbottom, bbottom]);
         let top = a.interface_from(&[ftop, btop]);
         Ok(Waistband {
-            name: if fitted { "FittedWB" } else { "StraightWB" }.into(),
+            name: match fit {
+                Fit::Loose => "StraightWB",
+                Fit::Fitted => "FittedWB",
+            }
+            .into(),
             front,
             back,
             bottom_f: fbottom,
@@ -219,12 +221,11 @@ pub struct CuffBand {
 }
 
 impl CuffBand {
-    /// Panels `<tag>_cuff_f` and `<tag>_cuff_b`.
-    pub fn new(a: &mut Arena, tag: &str, c: &CuffParams, length: Option<f64>) -> Result<CuffBand> {
-        let length = length.unwrap_or(c.cuff_len);
-        let front = StraightBandPanel::new(a, &format!("{tag}_cuff_f"), c.b_width / 2.0, length, None)?;
+    /// Panels `<tag>_cuff_f` and `<tag>_cuff_b`, `length` long (cm).
+    pub fn new(a: &mut Arena, tag: &str, c: &CuffParams, length: f64) -> Result<CuffBand> {
+        let front = StraightBandPanel::new(a, &format!("{tag}_cuff_f"), c.b_width / 2.0, length, GatherTo::NONE)?;
         front.panel.translate_by(a, v3(0.0, 0.0, 15.0));
-        let back = StraightBandPanel::new(a, &format!("{tag}_cuff_b"), c.b_width / 2.0, length, None)?;
+        let back = StraightBandPanel::new(a, &format!("{tag}_cuff_b"), c.b_width / 2.0, length, GatherTo::NONE)?;
         back.panel.translate_by(a, v3(0.0, 0.0, -15.0));
         let stitches = vec![StitchRule::new(a, front.right, back.right)?, StitchRule::new(a, front.left, back.left)?];
         let bottom = a.interface_from(&[front.bottom, back.bottom]);
@@ -265,14 +266,15 @@ pub struct CuffSkirt {
 }
 
 impl CuffSkirt {
-    /// Panels `<tag>_cuff_skirt_f` and `<tag>_cuff_skirt_b`.
-    pub fn new(a: &mut Arena, tag: &str, c: &CuffParams, length: Option<f64>) -> Result<CuffSkirt> {
+    /// Panels `<tag>_cuff_skirt_f` and `<tag>_cuff_skirt_b`, `length` long (cm).
+    pub fn new(a: &mut Arena, tag: &str, c: &CuffParams, length: f64) -> Result<CuffSkirt> {
         let width = c.b_width;
         let flare_diff = (c.skirt_flare - 1.0) * width / 2.0;
-        let length = length.unwrap_or(c.cuff_len);
-        let front = SkirtPanel::new(a, &format!("{tag}_cuff_skirt_f"), width / 2.0, length, c.skirt_ruffle, None, 0.0, flare_diff)?;
+        let front =
+            SkirtPanel::new(a, &format!("{tag}_cuff_skirt_f"), width / 2.0, length, c.skirt_ruffle, GatherTo::NONE, 0.0, flare_diff)?;
         front.panel.translate_by(a, v3(0.0, 0.0, 15.0));
-        let back = SkirtPanel::new(a, &format!("{tag}_cuff_skirt_b"), width / 2.0, length, c.skirt_ruffle, None, 0.0, flare_diff)?;
+        let back =
+            SkirtPanel::new(a, &format!("{tag}_cuff_skirt_b"), width / 2.0, length, c.skirt_ruffle, GatherTo::NONE, 0.0, flare_diff)?;
         back.panel.translate_by(a, v3(0.0, 0.0, -15.0));
         let stitches = vec![StitchRule::new(a, front.right, back.right)?, StitchRule::new(a, front.left, back.left)?];
         let top = a.interface_from(&[front.top, back.top]);
@@ -315,8 +317,8 @@ pub struct CuffBandSkirt {
 impl CuffBandSkirt {
     /// Band of length `cuff_len·(1 − skirt_fraction)` over a skirt of the rest.
     pub fn new(a: &mut Arena, tag: &str, c: &CuffParams) -> Result<CuffBandSkirt> {
-        let cuff = CuffBand::new(a, tag, c, Some(c.cuff_len * (1.0 - c.skirt_fraction)))?;
-        let skirt = CuffSkirt::new(a, tag, c, Some(c.cuff_len * c.skirt_fraction))?;
+        let cuff = CuffBand::new(a, tag, c, c.cuff_len * (1.0 - c.skirt_fraction))?;
+        let skirt = CuffSkirt::new(a, tag, c, c.cuff_len * c.skirt_fraction)?;
         skirt.place_below(a, &cuff, 2.0);
         let stitches = vec![StitchRule::new(a, cuff.bottom, skirt.top)?];
         Ok(CuffBandSkirt { top: cuff.top, top_front: cuff.top_front, top_back: cuff.top_back, bottom: skirt.bottom, cuff, skirt, stitches })
@@ -343,8 +345,8 @@ impl Cuff {
     /// Build the cuff of the given kind.
     pub fn new(a: &mut Arena, kind: CuffKind, tag: &str, c: &CuffParams) -> Result<Cuff> {
         Ok(match kind {
-            CuffKind::CuffBand => Cuff::Band(CuffBand::new(a, tag, c, None)?),
-            CuffKind::CuffSkirt => Cuff::Skirt(CuffSkirt::new(a, tag, c, None)?),
+            CuffKind::CuffBand => Cuff::Band(CuffBand::new(a, tag, c, c.cuff_len)?),
+            CuffKind::CuffSkirt => Cuff::Skirt(CuffSkirt::new(a, tag, c, c.cuff_len)?),
             CuffKind::CuffBandSkirt => Cuff::BandSkirt(CuffBandSkirt::new(a, tag, c)?),
         })
     }

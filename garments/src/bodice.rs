@@ -3,11 +3,12 @@
 
 use crate::collars::Collar;
 use crate::common::{tan_deg, v2, v3};
-use crate::design::{ArmholeShape, CollarStyle, CuffKind, Design, NeckShape};
+use crate::design::{self, CollarComponent};
+use crate::shared::{Fit, Resolved, Side};
 use crate::sleeves::Sleeve;
 use garmentcode::math::lerp;
 use garmentcode::ops::{Cut, DartSize, EdgeSide, cut_corner, dart_shape};
-use garmentcode::{Align, Arena, Body, Component, EdgeSeq, Gather, InterfaceId, PanelId, PartExt, Result, StitchRule, Vec2};
+use garmentcode::{Align, Arena, Body, Component, EdgeSeq, InterfaceId, PanelId, PartExt, Result, StitchRule, Vec2};
 
 /// How a torso panel reports its width at a level below the shoulder.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -73,8 +74,9 @@ impl TorsoPanel {
         TorsoPanel { panel, outside, inside, shoulder, bottom, shoulder_corner, collar_corner, width, rule }
     }
 
-    /// Loose front (`front = true`) or back half, t-shirt block.
-    pub fn loose(a: &mut Arena, name: &str, body: &Body, shirt: &ShirtParams, front: bool) -> Result<TorsoPanel> {
+    /// Loose front or back half, t-shirt block.
+    pub fn loose(a: &mut Arena, name: &str, body: &Body, shirt: &design::Shirt, side: Side) -> Result<TorsoPanel> {
+        let front = side == Side::Front;
         let m_width = shirt.width * body.bust;
         let b_width0 = shirt.flare * m_width;
         let body_width = if front { (body.bust - body.back_width) / 2.0 } else { body.back_width / 2.0 };
@@ -221,222 +223,21 @@ impl TorsoPanel {
     }
 }
 
-/// Resolved parameters of one bodice half: the right side's from `shirt`, `collar`,
-/// `sleeve`; the left side's of asymmetric tops from `left` plus what it inherits.
-#[derive(Clone, Debug)]
-pub struct HalfDesign {
-    /// Body of the half.
-    pub shirt: ShirtParams,
-    /// Neckline and collar.
-    pub collar: CollarParams,
-    /// Sleeve.
-    pub sleeve: SleeveParams,
-}
-
-/// Shirt body parameters of one half.
-#[derive(Clone, Debug)]
-pub struct ShirtParams {
-    /// Strapless (fitted only).
-    pub strapless: bool,
-    /// Length factor (loose).
-    pub length: f64,
-    /// Width factor (loose).
-    pub width: f64,
-    /// Hem flare (loose).
-    pub flare: f64,
-}
-
-/// Neckline and collar parameters of one half (fractions, as in the design).
-#[derive(Clone, Debug)]
-pub struct CollarParams {
-    /// Front neckline shape.
-    pub f_collar: NeckShape,
-    /// Back neckline shape.
-    pub b_collar: NeckShape,
-    /// Width parameter.
-    pub width: f64,
-    /// Front depth parameter.
-    pub fc_depth: f64,
-    /// Back depth parameter.
-    pub bc_depth: f64,
-    /// Front angle.
-    pub fc_angle: f64,
-    /// Back angle.
-    pub bc_angle: f64,
-    /// Front Bézier x.
-    pub f_bezier_x: f64,
-    /// Front Bézier y.
-    pub f_bezier_y: f64,
-    /// Back Bézier x.
-    pub b_bezier_x: f64,
-    /// Back Bézier y.
-    pub b_bezier_y: f64,
-    /// Flip front curve.
-    pub f_flip_curve: bool,
-    /// Flip back curve.
-    pub b_flip_curve: bool,
-    /// Collar component.
-    pub style: Option<CollarStyle>,
-    /// Collar height, cm.
-    pub depth: f64,
-    /// Standing lapel back.
-    pub lapel_standing: bool,
-    /// Hood depth factor.
-    pub hood_depth: f64,
-    /// Hood length factor.
-    pub hood_length: f64,
-}
-
-/// Sleeve parameters of one half.
-#[derive(Clone, Debug)]
-pub struct SleeveParams {
-    /// No sleeve.
-    pub sleeveless: bool,
-    /// Armhole shape of sleeveless designs.
-    pub armhole_shape: ArmholeShape,
-    /// Length factor.
-    pub length: f64,
-    /// Armhole depth parameter.
-    pub connecting_width: f64,
-    /// End width factor.
-    pub end_width: f64,
-    /// Rest angle, degrees.
-    pub sleeve_angle: f64,
-    /// Opening direction mix.
-    pub opening_dir_mix: f64,
-    /// Standing shoulder.
-    pub standing_shoulder: bool,
-    /// Standing shoulder length, cm.
-    pub standing_shoulder_len: f64,
-    /// Cap gathering.
-    pub connect_ruffle: f64,
-    /// Angled-armhole smoothing.
-    pub smoothing_coeff: f64,
-    /// Cuff style.
-    pub cuff_type: Option<CuffKind>,
-    /// Cuff gathering.
-    pub cuff_top_ruffle: f64,
-    /// Cuff length factor.
-    pub cuff_len: f64,
-    /// Cuff skirt fraction.
-    pub cuff_skirt_fraction: f64,
-    /// Cuff skirt flare.
-    pub cuff_skirt_flare: f64,
-    /// Cuff skirt gathering.
-    pub cuff_skirt_ruffle: f64,
-}
-
-/// A half's sleeve from its design parameters: the right (or symmetric) sleeve's
-/// and the asymmetric left sleeve's types differ only in sampling probabilities.
-macro_rules! sleeve_params_from {
-    ($($design:ty),*) => {$(
-        impl From<&$design> for SleeveParams {
-            fn from(s: &$design) -> SleeveParams {
-                SleeveParams {
-                    sleeveless: s.sleeveless,
-                    armhole_shape: s.armhole_shape,
-                    length: s.length,
-                    connecting_width: s.connecting_width,
-                    end_width: s.end_width,
-                    sleeve_angle: s.sleeve_angle as f64,
-                    opening_dir_mix: s.opening_dir_mix,
-                    standing_shoulder: s.standing_shoulder,
-                    standing_shoulder_len: s.standing_shoulder_len,
-                    connect_ruffle: s.connect_ruffle,
-                    smoothing_coeff: s.smoothing_coeff,
-                    cuff_type: s.cuff.r#type,
-                    cuff_top_ruffle: s.cuff.top_ruffle,
-                    cuff_len: s.cuff.cuff_len,
-                    cuff_skirt_fraction: s.cuff.skirt_fraction,
-                    cuff_skirt_flare: s.cuff.skirt_flare,
-                    cuff_skirt_ruffle: s.cuff.skirt_ruffle,
-                }
-            }
-        }
-    )*};
-}
-sleeve_params_from!(crate::design::Sleeve, crate::design::LeftSleeve);
-
-impl HalfDesign {
-    /// The right half (and both halves of symmetric tops).
-    pub fn right(d: &Design) -> HalfDesign {
-        let c = &d.collar;
-        let s = &d.sleeve;
-        HalfDesign {
-            shirt: ShirtParams { strapless: d.shirt.strapless, length: d.shirt.length, width: d.shirt.width, flare: d.shirt.flare },
-            collar: CollarParams {
-                f_collar: c.f_collar,
-                b_collar: c.b_collar,
-                width: c.width,
-                fc_depth: c.fc_depth,
-                bc_depth: c.bc_depth,
-                fc_angle: c.fc_angle as f64,
-                bc_angle: c.bc_angle as f64,
-                f_bezier_x: c.f_bezier_x,
-                f_bezier_y: c.f_bezier_y,
-                b_bezier_x: c.b_bezier_x,
-                b_bezier_y: c.b_bezier_y,
-                f_flip_curve: c.f_flip_curve,
-                b_flip_curve: c.b_flip_curve,
-                // Collar components are incompatible with asymmetric tops.
-                style: if d.left.enable_asym { None } else { c.component.style },
-                depth: c.component.depth as f64,
-                lapel_standing: c.component.lapel_standing,
-                hood_depth: c.component.hood_depth,
-                hood_length: c.component.hood_length,
-            },
-            sleeve: SleeveParams::from(s),
-        }
-    }
-
-    /// The left half: its own design when asymmetric, with the shirt length and the
-    /// neckline depths inherited from the right so the centre seams agree.
-    pub fn left(d: &Design) -> HalfDesign {
-        if !d.left.enable_asym {
-            return HalfDesign::right(d);
-        }
-        let l = &d.left;
-        let (c, s) = (&l.collar, &l.sleeve);
-        let right = HalfDesign::right(d);
-        HalfDesign {
-            shirt: ShirtParams { strapless: l.shirt.strapless, length: d.shirt.length, width: l.shirt.width, flare: l.shirt.flare },
-            collar: CollarParams {
-                f_collar: c.f_collar,
-                b_collar: c.b_collar,
-                width: c.width,
-                fc_depth: d.collar.fc_depth,
-                bc_depth: d.collar.bc_depth,
-                fc_angle: c.fc_angle as f64,
-                bc_angle: c.bc_angle as f64,
-                f_bezier_x: c.f_bezier_x,
-                f_bezier_y: c.f_bezier_y,
-                b_bezier_x: c.b_bezier_x,
-                b_bezier_y: c.b_bezier_y,
-                f_flip_curve: c.f_flip_curve,
-                b_flip_curve: c.b_flip_curve,
-                style: None,
-                ..right.collar
-            },
-            sleeve: SleeveParams::from(s),
-        }
-    }
-}
-
-/// Values `BodiceHalf` derives from the design and the torso (cm).
+/// The design groups one bodice half is built from (the design's own groups, or the
+/// left side's of an asymmetric top: see [`Shirt::new`]).
 #[derive(Clone, Copy, Debug)]
-pub struct Resolved {
-    /// Armhole height.
-    pub connecting_width: f64,
-    /// Neckline width.
-    pub collar_width: f64,
-    /// Front neckline depth at the shoulder line.
-    pub fc_depth: f64,
-    /// Back neckline depth at the shoulder line.
-    pub bc_depth: f64,
-    /// Front depth below the shoulder slope (strapless crop).
-    pub f_strapless_depth: f64,
-    /// Back depth below the shoulder slope.
-    pub b_strapless_depth: f64,
+pub struct HalfGroups<'a> {
+    /// Body of the half.
+    pub shirt: &'a design::Shirt,
+    /// Neckline and collar.
+    pub collar: &'a design::Collar,
+    /// Sleeve.
+    pub sleeve: &'a design::Sleeve,
+}
+
+/// The collar component group without a collar.
+fn without_collar(c: &CollarComponent) -> CollarComponent {
+    CollarComponent { style: None, ..c.clone() }
 }
 
 /// The armhole interfaces cut into the torso panels, and the torso widths the sleeve
@@ -492,15 +293,17 @@ pub struct BodiceHalf {
 }
 
 impl BodiceHalf {
-    /// Build the half `name` (`right` or `left`).
-    pub fn new(a: &mut Arena, name: &str, body: &Body, design: &HalfDesign, fitted: bool) -> Result<BodiceHalf> {
-        let (ftorso, btorso) = if fitted {
-            (TorsoPanel::fitted_front(a, &format!("{name}_ftorso"), body)?, TorsoPanel::fitted_back(a, &format!("{name}_btorso"), body)?)
-        } else {
-            (
-                TorsoPanel::loose(a, &format!("{name}_ftorso"), body, &design.shirt, true)?,
-                TorsoPanel::loose(a, &format!("{name}_btorso"), body, &design.shirt, false)?,
-            )
+    /// Build the half `name` (`right` or `left`) from its design groups.
+    pub fn new(a: &mut Arena, name: &str, body: &Body, design: &HalfGroups<'_>, fit: Fit) -> Result<BodiceHalf> {
+        let (ftorso, btorso) = match fit {
+            Fit::Fitted => (
+                TorsoPanel::fitted_front(a, &format!("{name}_ftorso"), body)?,
+                TorsoPanel::fitted_back(a, &format!("{name}_btorso"), body)?,
+            ),
+            Fit::Loose => (
+                TorsoPanel::loose(a, &format!("{name}_ftorso"), body, design.shirt, Side::Front)?,
+                TorsoPanel::loose(a, &format!("{name}_btorso"), body, design.shirt, Side::Back)?,
+            ),
         };
         ftorso.panel.translate_by(a, v3(0.0, 0.0, 30.0));
         btorso.panel.translate_by(a, v3(0.0, 0.0, -25.0));
@@ -517,7 +320,7 @@ impl BodiceHalf {
             stitches: Vec::new(),
         };
         let r = half.eval_dep_params(a, body, design)?;
-        if design.shirt.strapless && fitted {
+        if design.shirt.strapless && fit == Fit::Fitted {
             half.make_strapless(a, body, &r)?;
             half.check_torso_outlines(a)?;
         } else {
@@ -535,7 +338,7 @@ impl BodiceHalf {
         Ok(half)
     }
 
-    fn eval_dep_params(&self, a: &Arena, body: &Body, design: &HalfDesign) -> Result<Resolved> {
+    fn eval_dep_params(&self, a: &Arena, body: &Body, design: &HalfGroups<'_>) -> Result<Resolved> {
         let d = body.derived();
         let max_cwidth = a.edge_length(self.ftorso.shoulder_corner.edges(a)[0]) - 1.0;
         let min_cwidth = d.armscye_depth;
@@ -573,10 +376,10 @@ impl BodiceHalf {
 
     /// Cut the armholes into the torso panels (the sleeve's shapes, without its
     /// panels yet: see [`BodiceHalf::add_sleeve_panels`]).
-    fn cut_armholes(&mut self, a: &mut Arena, body: &Body, design: &HalfDesign, r: &Resolved) -> Result<Armholes> {
+    fn cut_armholes(&mut self, a: &mut Arena, body: &Body, design: &HalfGroups<'_>, r: &Resolved) -> Result<Armholes> {
         let front_w = self.ftorso.get_width(a, body, r.connecting_width);
         let back_w = self.btorso.get_width(a, body, r.connecting_width);
-        let sleeve = Sleeve::armholes(a, &self.name, body, &design.sleeve, r.connecting_width, front_w, back_w)?;
+        let sleeve = Sleeve::armholes(a, &self.name, body, design.sleeve, r.connecting_width, front_w, back_w)?;
         let front = cut_corner(a, &sleeve.in_front_shape, self.ftorso.shoulder_corner)?.interface;
         let back = cut_corner(a, &sleeve.in_back_shape, self.btorso.shoulder_corner)?.interface;
         self.sleeve = Some(sleeve);
@@ -586,10 +389,10 @@ impl BodiceHalf {
     /// Build the sleeve into the armholes cut by [`BodiceHalf::cut_armholes`]. Its
     /// stitch comes first among the half's stitches, as in the reference, which builds
     /// the sleeve before the collar.
-    fn add_sleeve_panels(&mut self, a: &mut Arena, body: &Body, design: &HalfDesign, r: &Resolved, armholes: Armholes) -> Result<()> {
+    fn add_sleeve_panels(&mut self, a: &mut Arena, body: &Body, design: &HalfGroups<'_>, r: &Resolved, armholes: Armholes) -> Result<()> {
         let Armholes { front: f_int, back: b_int, front_w, back_w } = armholes;
         let sleeve = self.sleeve.as_mut().expect("armholes cut first");
-        sleeve.add_panels(a, &self.name, body, &design.sleeve, r.connecting_width, front_w, back_w)?;
+        sleeve.add_panels(a, &self.name, body, design.sleeve, r.connecting_width, front_w, back_w)?;
         if let Some(sleeve_in) = sleeve.in_ {
             let f = f_int.reverse(a, true);
             let b = b_int.reverse(a, false);
@@ -608,17 +411,17 @@ impl BodiceHalf {
 
     /// Cut the neckline into the torso panels (the collar's panels come later: see
     /// [`BodiceHalf::add_collar`]).
-    fn cut_neckline(&mut self, a: &mut Arena, design: &HalfDesign, r: &Resolved) -> Result<Neckline> {
-        let shapes = Collar::necklines(a, &design.collar, r)?;
+    fn cut_neckline(&mut self, a: &mut Arena, design: &HalfGroups<'_>, r: &Resolved) -> Result<Neckline> {
+        let shapes = Collar::necklines(a, design.collar, r)?;
         let front = cut_corner(a, &shapes.0, self.ftorso.collar_corner)?.interface;
         let back = cut_corner(a, &shapes.1, self.btorso.collar_corner)?.interface;
         Ok(Neckline { shapes, front, back })
     }
 
     /// Build the collar over the neckline cut by [`BodiceHalf::cut_neckline`].
-    fn add_collar(&mut self, a: &mut Arena, body: &Body, design: &HalfDesign, r: &Resolved, neckline: Neckline) -> Result<()> {
+    fn add_collar(&mut self, a: &mut Arena, body: &Body, design: &HalfGroups<'_>, r: &Resolved, neckline: Neckline) -> Result<()> {
         let Neckline { shapes, front: fc, back: bc } = neckline;
-        let collar = Collar::new(a, &self.name, body, &design.collar, r, shapes)?;
+        let collar = Collar::new(a, &self.name, body, design.collar, r, shapes)?;
         if let Some(bottom) = collar.bottom() {
             let both = a.interface_from(&[fc, bc]);
             self.stitches.push(StitchRule::new(a, both, bottom)?);
@@ -705,23 +508,49 @@ pub struct Shirt {
 }
 
 impl Shirt {
-    /// Build the shirt.
-    pub fn new(a: &mut Arena, body: &Body, design: &Design, fitted: bool) -> Result<Shirt> {
-        let right = BodiceHalf::new(a, "right", body, &HalfDesign::right(design), fitted)?;
-        let left = BodiceHalf::new(a, "left", body, &HalfDesign::left(design), fitted)?;
+    /// Build the shirt from the design's upper-garment groups: `shirt`, `collar` and
+    /// `sleeve` for the right half (and both halves of symmetric tops), `left` for
+    /// the left half of asymmetric ones.
+    pub fn new(
+        a: &mut Arena,
+        body: &Body,
+        shirt: &design::Shirt,
+        collar: &design::Collar,
+        sleeve: &design::Sleeve,
+        left: &design::Left,
+        fit: Fit,
+    ) -> Result<Shirt> {
+        let (right, left) = if left.enable_asym {
+            // Collar components need both halves alike: asymmetric tops have none.
+            let right_collar = design::Collar { component: without_collar(&collar.component), ..collar.clone() };
+            let right = BodiceHalf::new(a, "right", body, &HalfGroups { shirt, collar: &right_collar, sleeve }, fit)?;
+            // The left side's own groups, but what meets the right half at the centre
+            // seams comes from the right: the shirt length and the neckline depths.
+            let left_shirt = design::Shirt { length: shirt.length, ..left.shirt.clone() };
+            let left_collar = design::Collar {
+                fc_depth: collar.fc_depth,
+                bc_depth: collar.bc_depth,
+                component: without_collar(&collar.component),
+                ..left.collar.clone()
+            };
+            let groups = HalfGroups { shirt: &left_shirt, collar: &left_collar, sleeve: &left.sleeve };
+            (right, BodiceHalf::new(a, "left", body, &groups, fit)?)
+        } else {
+            let groups = HalfGroups { shirt, collar, sleeve };
+            (BodiceHalf::new(a, "right", body, &groups, fit)?, BodiceHalf::new(a, "left", body, &groups, fit)?)
+        };
         left.mirror(a);
         let stitches = vec![StitchRule::new(a, right.front_in, left.front_in)?, StitchRule::new(a, right.back_in, left.back_in)?];
         let parts = [right.f_bottom.reverse(a, false), left.f_bottom, left.b_bottom.reverse(a, false), right.b_bottom];
         let bottom = a.interface_from(&parts);
-        Ok(Shirt { name: if fitted { "FittedShirt" } else { "Shirt" }.into(), right, left, bottom, stitches })
+        let name = match fit {
+            Fit::Loose => "Shirt",
+            Fit::Fitted => "FittedShirt",
+        };
+        Ok(Shirt { name: name.into(), right, left, bottom, stitches })
     }
 
     fn shirt_length(&self, a: &Arena) -> f64 {
         self.right.part_length(a)
     }
-}
-
-#[allow(dead_code)]
-fn _gather_used(g: Gather) -> Gather {
-    g
 }

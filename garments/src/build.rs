@@ -105,10 +105,15 @@ pub struct Built {
 /// Build `design` on `body` into the pattern named `name`, reusing `arena`.
 pub fn build_in(arena: &mut Arena, design: &Design, body: &Body, name: &str) -> Result<Built, BuildError> {
     arena.stop_at_self_intersection(false);
-    let garment = new_garment(arena, design, body)?;
+    let garment = new_garment(arena, design, body);
+    degenerate(arena)?;
+    let garment = garment?;
     let (total_length, floor_length) = lengths(arena, &garment, body);
     let self_intersecting = garment.is_self_intersecting(arena);
-    let pattern = garment.assemble(arena, name)?;
+    degenerate(arena)?;
+    let pattern = garment.assemble(arena, name);
+    degenerate(arena)?;
+    let pattern = pattern?;
     let param_combinations = check_param_combinations(design);
     let checks =
         Checks { param_combinations, total_length, floor_length, total_length_ok: total_length <= floor_length + 1.0, self_intersecting };
@@ -145,21 +150,34 @@ pub enum Refusal {
 /// torso crossing itself then still does at the end.
 pub fn build_valid_in(arena: &mut Arena, design: &Design, body: &Body, name: &str) -> Result<Built, Refusal> {
     arena.stop_at_self_intersection(true);
-    let garment = new_garment(arena, design, body).map_err(|e| match e {
+    let garment = new_garment(arena, design, body);
+    degenerate(arena).map_err(Refusal::Build)?;
+    let garment = garment.map_err(|e| match e {
         BuildError::Geometry(garmentcode::Error::SelfIntersecting { .. }) => Refusal::SelfIntersecting,
         e => Refusal::Build(e),
     })?;
     let (total_length, floor_length) = lengths(arena, &garment, body);
+    degenerate(arena).map_err(Refusal::Build)?;
     if total_length > floor_length + 1.0 {
         return Err(Refusal::TooLong { total_length, floor_length });
     }
-    if garment.is_self_intersecting(arena) {
+    let self_intersecting = garment.is_self_intersecting(arena);
+    degenerate(arena).map_err(Refusal::Build)?;
+    if self_intersecting {
         return Err(Refusal::SelfIntersecting);
     }
-    let pattern = garment.assemble(arena, name).map_err(|e| Refusal::Build(e.into()))?;
+    let pattern = garment.assemble(arena, name);
+    degenerate(arena).map_err(Refusal::Build)?;
+    let pattern = pattern.map_err(|e| Refusal::Build(e.into()))?;
     let param_combinations = check_param_combinations(design);
     let checks = Checks { param_combinations, total_length, floor_length, total_length_ok: true, self_intersecting: false };
     Ok(Built { pattern, checks })
+}
+
+/// Fail as the reference does when a linearisation so far made a piece whose ends
+/// coincide (see [`Arena::take_degenerate_linearization`]).
+fn degenerate(arena: &mut Arena) -> Result<(), BuildError> {
+    arena.take_degenerate_linearization().map_or(Ok(()), |e| Err(e.into()))
 }
 
 /// The garment program run on a cleared arena; an empty garment is an error.

@@ -1,8 +1,7 @@
 //! Built-in bodies and named designs, embedded in the binary.
 
-use garmentcode::Body;
-use garmentcode::Params;
-use garmentcode::params::read_design;
+use garmentcode::io::read_design;
+use garmentcode::{Body, Params};
 
 use crate::Design;
 

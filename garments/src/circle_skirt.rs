@@ -2,8 +2,9 @@
 //! asymmetric (shorter in front) full-circle skirt.
 
 use crate::common::{eval_rise, v2, v3};
-use crate::design::Design;
-use garmentcode::arc;
+use crate::design::FlareSkirt;
+use crate::shared::{BottomOptions, GatherTo, Symmetry};
+use garmentcode::curves;
 use garmentcode::ops::{DartSize, EdgeSide, cut_into_edge, dart_shape};
 use garmentcode::{Arena, Body, Component, Curve, EdgeSeq, InterfaceId, PanelId, Result, StitchRule};
 use std::f64::consts::PI;
@@ -30,15 +31,7 @@ pub struct CircleArcPanel {
 
 impl CircleArcPanel {
     /// Sector of inner radius `top_rad`, width `length` and opening `angle` (radians).
-    pub fn new(
-        a: &mut Arena,
-        name: &str,
-        top_rad: f64,
-        length: f64,
-        angle: f64,
-        match_top: Option<f64>,
-        match_bottom: Option<f64>,
-    ) -> Result<CircleArcPanel> {
+    pub fn new(a: &mut Arena, name: &str, top_rad: f64, length: f64, angle: f64, gather: GatherTo) -> Result<CircleArcPanel> {
         let half = angle / 2.0;
         let dist_w = 2.0 * top_rad * half.sin();
         let dist_out = 2.0 * (top_rad + length) * half.sin();
@@ -46,29 +39,23 @@ impl CircleArcPanel {
         let large = half > PI / 2.0;
         let p0 = a.vertex(v2(-dist_w / 2.0, 0.0));
         let p1 = a.vertex(v2(dist_w / 2.0, 0.0));
-        let cy = arc::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, large, true);
+        let cy = curves::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, large, true);
         let top = a.edge(p0, p1, Curve::Arc { cy })?;
         let p2 = a.vertex(v2(dist_out / 2.0, -vert_len));
         let side = a.edge(p1, p2, Curve::Line)?;
         let p3 = a.vertex(v2(-dist_out / 2.0, -vert_len));
-        let cy = arc::cy_from_radius(a.pos(p2), a.pos(p3), top_rad + length, large, false);
+        let cy = curves::cy_from_radius(a.pos(p2), a.pos(p3), top_rad + length, large, false);
         let bottom = a.edge(p2, p3, Curve::Arc { cy })?;
         let mut edges = EdgeSeq(vec![top, side, bottom]);
         edges.close_loop(a)?;
         let panel = a.panel_with_edges(name, edges.clone());
-        Self::interfaces(a, panel, &edges, match_top, match_bottom)
+        Self::interfaces(a, panel, &edges, gather)
     }
 
-    fn interfaces(
-        a: &mut Arena,
-        panel: PanelId,
-        edges: &EdgeSeq,
-        match_top: Option<f64>,
-        match_bottom: Option<f64>,
-    ) -> Result<CircleArcPanel> {
-        let top_ruffle = match_top.map(|m| a.edge_length(edges[0]) / m).unwrap_or(1.0);
+    fn interfaces(a: &mut Arena, panel: PanelId, edges: &EdgeSeq, gather: GatherTo) -> Result<CircleArcPanel> {
+        let top_ruffle = gather.top.map(|m| a.edge_length(edges[0]) / m).unwrap_or(1.0);
         let top = a.interface_gathered(panel, edges[0], top_ruffle)?.reverse(a, true);
-        let bottom_ruffle = match_bottom.map(|m| a.edge_length(edges[2]) / m).unwrap_or(1.0);
+        let bottom_ruffle = gather.bottom.map(|m| a.edge_length(edges[2]) / m).unwrap_or(1.0);
         let bottom = a.interface_gathered(panel, edges[2], bottom_ruffle)?;
         let left = a.interface(panel, edges[1]);
         let right = a.interface(panel, edges[3]);
@@ -83,11 +70,11 @@ impl CircleArcPanel {
         length: f64,
         top_width: f64,
         sun_fraction: f64,
-        match_top: Option<f64>,
+        gather: GatherTo,
     ) -> Result<CircleArcPanel> {
         let arc = sun_fraction * 2.0 * PI;
         let rad = top_width / arc;
-        CircleArcPanel::new(a, name, rad, length, arc, match_top, None)
+        CircleArcPanel::new(a, name, rad, length, arc, gather)
     }
 
     /// Sector from its width and the lengths of its two arcs. QUIRK: no guard for
@@ -98,13 +85,12 @@ impl CircleArcPanel {
         length: f64,
         top_width: f64,
         bottom_width: f64,
-        match_top: Option<f64>,
-        match_bottom: Option<f64>,
+        gather: GatherTo,
     ) -> Result<CircleArcPanel> {
         let diff = bottom_width - top_width;
         let arc = diff / length;
         let rad = top_width / arc;
-        CircleArcPanel::new(a, name, rad, length, arc, match_top, match_bottom)
+        CircleArcPanel::new(a, name, rad, length, arc, gather)
     }
 }
 
@@ -130,29 +116,22 @@ pub struct AsymHalfCirclePanel {
 
 impl AsymHalfCirclePanel {
     /// Half circle of radius `top_rad`, `length_f` long at the centre and `length_s` at the sides.
-    pub fn new(
-        a: &mut Arena,
-        name: &str,
-        top_rad: f64,
-        length_f: f64,
-        length_s: f64,
-        match_top: Option<f64>,
-    ) -> Result<AsymHalfCirclePanel> {
+    pub fn new(a: &mut Arena, name: &str, top_rad: f64, length_f: f64, length_s: f64, gather: GatherTo) -> Result<AsymHalfCirclePanel> {
         let dist_w = 2.0 * top_rad;
         let dist_out = 2.0 * (top_rad + length_s);
         let p0 = a.vertex(v2(-dist_w / 2.0, 0.0));
         let p1 = a.vertex(v2(dist_w / 2.0, 0.0));
-        let cy = arc::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, false, true);
+        let cy = curves::cy_from_radius(a.pos(p0), a.pos(p1), top_rad, false, true);
         let top = a.edge(p0, p1, Curve::Arc { cy })?;
         let p2 = a.vertex(v2(dist_out / 2.0, 0.0));
         let side = a.edge(p1, p2, Curve::Line)?;
         let p3 = a.vertex(v2(-dist_out / 2.0, 0.0));
-        let cy = arc::cy_from_three_points(a.pos(p2), a.pos(p3), v2(0.0, -(top_rad + length_f)));
+        let cy = curves::cy_from_three_points(a.pos(p2), a.pos(p3), v2(0.0, -(top_rad + length_f)));
         let bottom = a.edge(p2, p3, Curve::Arc { cy })?;
         let mut edges = EdgeSeq(vec![top, side, bottom]);
         edges.close_loop(a)?;
         let panel = a.panel_with_edges(name, edges.clone());
-        let c = CircleArcPanel::interfaces(a, panel, &edges, match_top, None)?;
+        let c = CircleArcPanel::interfaces(a, panel, &edges, GatherTo { bottom: None, ..gather })?;
         Ok(AsymHalfCirclePanel { panel, top: c.top, bottom: c.bottom, left: c.left, right: c.right })
     }
 }
@@ -205,36 +184,33 @@ pub struct SkirtCircle {
 }
 
 impl SkirtCircle {
-    /// Build from `flare-skirt` parameters; `length` and `rise` override them (tiers).
-    pub fn new(
-        a: &mut Arena,
-        body: &Body,
-        design: &Design,
-        tag: &str,
-        length: Option<f64>,
-        rise: Option<f64>,
-        slit: bool,
-        asymm: bool,
-    ) -> Result<SkirtCircle> {
-        let d = &design.flare_skirt;
-        let rise = rise.unwrap_or(d.rise);
+    /// Build from the `flare-skirt` group, symmetric or not, with `opts` (the hem cut
+    /// is its slit).
+    pub fn new(a: &mut Arena, body: &Body, d: &FlareSkirt, symmetry: Symmetry, opts: &BottomOptions) -> Result<SkirtCircle> {
+        let rise = opts.rise.unwrap_or(d.rise);
         let (waist, hips_depth, _) = eval_rise(body, rise)?;
-        let length = length.unwrap_or(hips_depth + d.length * body.derived().leg_length);
+        let length = opts.length.unwrap_or(hips_depth + d.length * body.derived().leg_length);
         let length = length.max(5.0);
-        let name = |base: &str| if tag.is_empty() { base.to_string() } else { format!("{base}_{tag}") };
+        let name = |base: &str| opts.name(base);
         let waist_level = body.derived().waist_level;
-        let (front, back) = if !asymm {
+        let (front, back) = if symmetry == Symmetry::Symmetric {
             let f = CircleArcPanel::from_w_length_suns(
                 a,
                 &name("skirt_front"),
                 length,
                 waist / 2.0,
                 d.suns / 2.0,
-                Some(body.waist - body.waist_back_width),
+                GatherTo::top(body.waist - body.waist_back_width),
             )?;
             f.panel.translate_by(a, v3(0.0, waist_level, 15.0));
-            let b =
-                CircleArcPanel::from_w_length_suns(a, &name("skirt_back"), length, waist / 2.0, d.suns / 2.0, Some(body.waist_back_width))?;
+            let b = CircleArcPanel::from_w_length_suns(
+                a,
+                &name("skirt_back"),
+                length,
+                waist / 2.0,
+                d.suns / 2.0,
+                GatherTo::top(body.waist_back_width),
+            )?;
             b.panel.translate_by(a, v3(0.0, waist_level, -15.0));
             (CirclePanel::Sector(f), CirclePanel::Sector(b))
         } else {
@@ -243,15 +219,22 @@ impl SkirtCircle {
             let tot_len = w_rad * 2.0 + length + f_length;
             let del_r = tot_len / 2.0 - f_length - w_rad;
             let s_length = ((tot_len / 2.0).powi(2) - del_r * del_r).sqrt() - w_rad;
-            let f = AsymHalfCirclePanel::new(a, &name("skirt_front"), w_rad, f_length, s_length, Some(body.waist - body.waist_back_width))?;
+            let f = AsymHalfCirclePanel::new(
+                a,
+                &name("skirt_front"),
+                w_rad,
+                f_length,
+                s_length,
+                GatherTo::top(body.waist - body.waist_back_width),
+            )?;
             f.panel.translate_by(a, v3(0.0, waist_level, 15.0));
-            let b = AsymHalfCirclePanel::new(a, &name("skirt_back"), w_rad, length, s_length, Some(body.waist_back_width))?;
+            let b = AsymHalfCirclePanel::new(a, &name("skirt_back"), w_rad, length, s_length, GatherTo::top(body.waist_back_width))?;
             b.panel.translate_by(a, v3(0.0, waist_level, -15.0));
             (CirclePanel::Half(f), CirclePanel::Half(b))
         };
         let (fp, ftop, fbottom, fleft, fright) = front.parts();
         let (bp, btop, bbottom, bleft, bright) = back.parts();
-        if d.cut.add && slit {
+        if d.cut.add && !opts.without_slits {
             if d.cut.place > 0.0 {
                 add_cut(a, fp, fbottom, d, length)?;
             } else {
@@ -270,7 +253,7 @@ impl SkirtCircle {
 }
 
 /// Cut an open slit into the hem of a circle-skirt panel.
-fn add_cut(a: &mut Arena, panel: PanelId, bottom: InterfaceId, d: &crate::design::FlareSkirt, sk_length: f64) -> Result<()> {
+fn add_cut(a: &mut Arena, panel: PanelId, bottom: InterfaceId, d: &FlareSkirt, sk_length: f64) -> Result<()> {
     let (width, depth) = (d.cut.width * sk_length, d.cut.depth * sk_length);
     let target = bottom.edges(a)[0];
     let t_len = a.edge_length(target);

@@ -2,11 +2,11 @@
 //! simple lapel and two-panel hood.
 
 use crate::bands::StraightBandPanel;
-use crate::bodice::{CollarParams, Resolved};
 use crate::circle_skirt::CircleArcPanel;
 use crate::common::{v2, v3};
-use crate::design::{CollarStyle, NeckShape};
+use crate::design::{self, CollarStyle};
 use crate::shapes::{self, NeckArgs};
+use crate::shared::{GatherTo, Resolved};
 use garmentcode::curves::match_tangents;
 use garmentcode::{Arena, Body, Component, Curve, Edge, EdgeSeq, InterfaceId, PanelId, Result, Rotation, StitchRule};
 
@@ -195,12 +195,12 @@ pub struct NoCollar {}
 impl Collar {
     /// The front and back neckline shapes the collar style cuts into the torso:
     /// known before the collar's panels are built ([`Collar::new`]).
-    pub fn necklines(a: &mut Arena, c: &CollarParams, r: &Resolved) -> Result<(EdgeSeq, EdgeSeq)> {
+    pub fn necklines(a: &mut Arena, c: &design::Collar, r: &Resolved) -> Result<(EdgeSeq, EdgeSeq)> {
         let width = r.collar_width;
-        Ok(match c.style {
+        Ok(match c.component.style {
             None => {
-                let f = NeckArgs { angle: c.fc_angle, flip: c.f_flip_curve, x: c.f_bezier_x, y: c.f_bezier_y };
-                let b = NeckArgs { angle: c.bc_angle, flip: c.b_flip_curve, x: c.b_bezier_x, y: c.b_bezier_y };
+                let f = NeckArgs { angle: c.fc_angle as f64, flip: c.f_flip_curve, x: c.f_bezier_x, y: c.f_bezier_y };
+                let b = NeckArgs { angle: c.bc_angle as f64, flip: c.b_flip_curve, x: c.b_bezier_x, y: c.b_bezier_y };
                 (shapes::neckline(a, c.f_collar, r.fc_depth, width, f)?, shapes::neckline(a, c.b_collar, r.bc_depth, width, b)?)
             }
             Some(CollarStyle::Turtle | CollarStyle::Hood2Panels) => {
@@ -209,7 +209,7 @@ impl Collar {
             Some(CollarStyle::SimpleLapel) => {
                 // QUIRK: the lapel does not pass the Bézier parameters to the front
                 // neckline (its defaults x = 0.5, y = 0.3 apply).
-                let args = NeckArgs { angle: c.fc_angle, flip: c.f_flip_curve, x: 0.5, y: 0.3 };
+                let args = NeckArgs { angle: c.fc_angle as f64, flip: c.f_flip_curve, x: 0.5, y: 0.3 };
                 (shapes::neckline(a, c.f_collar, r.fc_depth, width, args)?, shapes::circle_neck(a, r.bc_depth, width)?)
             }
         })
@@ -217,18 +217,18 @@ impl Collar {
 
     /// Build the collar component the design asks for (none or unknown: just the
     /// neckline) over the `necklines` made by [`Collar::necklines`].
-    pub fn new(a: &mut Arena, tag: &str, body: &Body, c: &CollarParams, r: &Resolved, necklines: (EdgeSeq, EdgeSeq)) -> Result<Collar> {
+    pub fn new(a: &mut Arena, tag: &str, body: &Body, c: &design::Collar, r: &Resolved, necklines: (EdgeSeq, EdgeSeq)) -> Result<Collar> {
         let width = r.collar_width;
         let (f, b) = necklines;
-        match c.style {
+        match c.component.style {
             None => Ok(Collar::NoPanels(NoCollar {})),
             Some(CollarStyle::Turtle) => {
-                let depth = c.depth;
+                let depth = c.component.depth as f64;
                 let (lf, lb) = (f.length(a), b.length(a));
                 let hp = body.height - body.head_l + depth;
-                let front = StraightBandPanel::new(a, &format!("{tag}_collar_front"), lf, depth, None)?;
+                let front = StraightBandPanel::new(a, &format!("{tag}_collar_front"), lf, depth, GatherTo::NONE)?;
                 front.panel.translate_by(a, v3(-lf / 2.0, hp, 10.0));
-                let back = StraightBandPanel::new(a, &format!("{tag}_collar_back"), lb, depth, None)?;
+                let back = StraightBandPanel::new(a, &format!("{tag}_collar_back"), lb, depth, GatherTo::NONE)?;
                 back.panel.translate_by(a, v3(-lb / 2.0, hp, -10.0));
                 let stitches = vec![StitchRule::new(a, front.right, back.right)?];
                 let bottom = a.interface_from(&[front.bottom, back.bottom]);
@@ -236,19 +236,19 @@ impl Collar {
                 Ok(Collar::Turtle(t))
             }
             Some(CollarStyle::SimpleLapel) => {
-                let depth = c.depth;
+                let depth = c.component.depth as f64;
                 let (lf, lb) = (f.length(a), b.length(a));
                 let hp = body.height - body.head_l + depth * 2.0;
                 let front = SimpleLapelPanel::new(a, &format!("{tag}_collar_front"), lf, depth)?;
                 front.panel.translate_by(a, v3(-depth * 2.0, hp, 35.0));
-                let (back_panel, back_right, back_left, back_bottom) = if c.lapel_standing {
-                    let back = StraightBandPanel::new(a, &format!("{tag}_collar_back"), lb, depth, None)?;
+                let (back_panel, back_right, back_left, back_bottom) = if c.component.lapel_standing {
+                    let back = StraightBandPanel::new(a, &format!("{tag}_collar_back"), lb, depth, GatherTo::NONE)?;
                     back.panel.translate_by(a, v3(-lb / 2.0, hp, -10.0));
                     back.right.set_right_wrong(a, true);
                     (back.panel, back.right, back.left, back.bottom)
                 } else {
                     let (rad, angle, _) = a.geom(b[0]).arc_radius_angle().expect("a circular neckline");
-                    let back = CircleArcPanel::new(a, &format!("{tag}_collar_back"), rad, depth, angle, None, None)?;
+                    let back = CircleArcPanel::new(a, &format!("{tag}_collar_back"), rad, depth, angle, GatherTo::NONE)?;
                     back.panel.translate_by(a, v3(-lb, hp, -10.0));
                     back.panel.rotate_by(a, Rotation::from_euler_xyz_degrees([90.0, 45.0, 0.0]));
                     let top = back.top.set_right_wrong(a, true);
@@ -270,8 +270,8 @@ impl Collar {
                     lf,
                     lb,
                     width,
-                    body.head_l * c.hood_length,
-                    width / 2.0 * c.hood_depth,
+                    body.head_l * c.component.hood_length,
+                    width / 2.0 * c.component.hood_depth,
                 )?;
                 panel.panel.translate_by(a, v3(0.0, body.height - body.head_l + 10.0, 0.0));
                 let h = Hood2Panels { name: format!("Hood_{tag}"), back: panel.to_other_side, bottom: panel.to_bodice, panel };
@@ -307,9 +307,4 @@ impl Collar {
             Collar::NoPanels(_) => None,
         }
     }
-}
-
-#[allow(dead_code)]
-fn _neck_shape_used(n: NeckShape) -> NeckShape {
-    n
 }

@@ -317,12 +317,13 @@ pub struct Sleeve {
     #[param(range = 0.1..=0.4, default = 0.25, prob = 0.8)]
     pub smoothing_coeff: f64,
     /// Cuff.
-    pub cuff: SleeveCuff,
+    pub cuff: Cuff,
 }
 
-/// Sleeve cuff.
+/// Cuff of a sleeve or a trouser leg (as on the right sleeve; the left sleeve and
+/// the trousers override some of it).
 #[derive(Clone, Debug, PartialEq, Params)]
-pub struct SleeveCuff {
+pub struct Cuff {
     /// Cuff style (none: no cuff).
     #[param(default = None)]
     pub r#type: Option<CuffKind>,
@@ -343,156 +344,30 @@ pub struct SleeveCuff {
     pub skirt_ruffle: f64,
 }
 
-/// Left sleeve of asymmetric tops.
-#[derive(Clone, Debug, PartialEq, Params)]
-pub struct LeftSleeve {
-    /// No sleeve.
-    #[param(default = true, prob = 0.7)]
-    pub sleeveless: bool,
-    /// Armhole cut of sleeveless designs.
-    #[param(default = ArmholeCurve, prob = 0.7)]
-    pub armhole_shape: ArmholeShape,
-    /// Sleeve length as a fraction of the arm.
-    #[param(range = 0.1..=1.15, default = 0.3)]
-    pub length: f64,
-    /// Armhole depth: extra fraction of the armscye depth.
-    #[param(range = 0..=2, default = 0.2, prob = 0.6)]
-    pub connecting_width: f64,
-    /// Width of the sleeve end relative to the armhole.
-    #[param(range = 0.2..=2, default = 1.0, prob = 0.4)]
-    pub end_width: f64,
-    /// Rest angle of the sleeve, degrees.
-    #[param(range = 10..=50, default = 10)]
-    pub sleeve_angle: i64,
-    /// Direction of the sleeve opening: towards vertical (positive) or horizontal (negative).
-    #[param(range = -0.9..=0.8, default = 0.2, prob = 1.0)]
-    pub opening_dir_mix: f64,
-    /// Square "standing" shoulder.
-    #[param(default = false, prob = 0.8)]
-    pub standing_shoulder: bool,
-    /// Length of the standing shoulder, cm.
-    #[param(range = 4..=10, default = 5.0)]
-    pub standing_shoulder_len: f64,
-    /// Gathering of the sleeve cap.
-    #[param(range = 1..=2, default = 1, prob = 0.4)]
-    pub connect_ruffle: f64,
-    /// Smoothing of angled armholes.
-    #[param(range = 0.1..=0.4, default = 0.25, prob = 0.8)]
-    pub smoothing_coeff: f64,
-    /// Cuff.
-    pub cuff: LeftSleeveCuff,
-}
-
-/// Left sleeve cuff.
-#[derive(Clone, Debug, PartialEq, Params)]
-pub struct LeftSleeveCuff {
-    /// Cuff style (none: no cuff).
-    #[param(default = None)]
-    pub r#type: Option<CuffKind>,
-    /// Gathering of the garment end into the cuff.
-    #[param(range = 1..=2, default = 1)]
-    pub top_ruffle: f64,
-    /// Cuff length as a fraction of the limb.
-    #[param(range = 0.05..=0.9, default = 0.1, prob = 0.7)]
-    pub cuff_len: f64,
-    /// Fraction of the cuff that is skirt (band-and-skirt cuffs).
-    #[param(range = 0.1..=0.9, default = 0.5, prob = 0.5)]
-    pub skirt_fraction: f64,
-    /// Flare of the cuff skirt.
-    #[param(range = 1..=2, default = 1.2)]
-    pub skirt_flare: f64,
-    /// Gathering of the cuff skirt.
-    #[param(range = 1..=1.5, default = 1.0, prob = 0.3)]
-    pub skirt_ruffle: f64,
-}
-
-/// Trouser cuffs.
-#[derive(Clone, Debug, PartialEq, Params)]
-pub struct PantsCuff {
-    /// Cuff style (none: no cuff).
-    #[param(default = None, prob = 0.5)]
-    pub r#type: Option<CuffKind>,
-    /// Gathering of the garment end into the cuff.
-    #[param(range = 1..=2, default = 1)]
-    pub top_ruffle: f64,
-    /// Cuff length as a fraction of the limb.
-    #[param(range = 0.05..=0.9, default = 0.1, prob = 0.3)]
-    pub cuff_len: f64,
-    /// Fraction of the cuff that is skirt (band-and-skirt cuffs).
-    #[param(range = 0.1..=0.9, default = 0.5)]
-    pub skirt_fraction: f64,
-    /// Flare of the cuff skirt.
-    #[param(range = 1..=2, default = 1.2)]
-    pub skirt_flare: f64,
-    /// Gathering of the cuff skirt.
-    #[param(range = 1..=1.5, default = 1.0)]
-    pub skirt_ruffle: f64,
-}
-
 /// The left side of asymmetric tops.
 #[derive(Clone, Debug, PartialEq, Params)]
 pub struct Left {
     /// Design the left side separately.
     #[param(default = false, prob = 0.8)]
     pub enable_asym: bool,
-    /// Left body.
-    pub shirt: LeftShirt,
-    /// Left neckline.
-    pub collar: LeftCollar,
+    /// Left body (its length is the right side's).
+    #[param(length(skip), strapless(doc = "Strapless left side (fitted tops only)."), width(default = 1.0))]
+    pub shirt: Shirt,
+    /// Left neckline (its depths are the right side's; no collar component).
+    #[param(
+        width(range = 0..=1, default = 0.5, doc = "Neckline width (0 = the neck width, 1 = up to the shoulders)."),
+        fc_depth(skip),
+        bc_depth(skip),
+        f_bezier_x(default = 0.5),
+        f_bezier_y(default = 0.3, prob = None),
+        b_bezier_x(default = 0.5),
+        b_bezier_y(default = 0.3, prob = None),
+        component(skip)
+    )]
+    pub collar: Collar,
     /// Left sleeve.
-    pub sleeve: LeftSleeve,
-}
-
-/// Left body of asymmetric tops.
-#[derive(Clone, Debug, PartialEq, Params)]
-pub struct LeftShirt {
-    /// Strapless left side (fitted tops only).
-    #[param(default = false, prob = 0.8)]
-    pub strapless: bool,
-    /// Width as a multiple of the bust (loose shirts).
-    #[param(range = 1.0..=1.3, default = 1.0, prob = 0.4)]
-    pub width: f64,
-    /// Hem width relative to the chest width (loose shirts).
-    #[param(range = 0.7..=1.6, default = 1.0, prob = 0.4)]
-    pub flare: f64,
-}
-
-/// Left neckline of asymmetric tops.
-#[derive(Clone, Debug, PartialEq, Params)]
-pub struct LeftCollar {
-    /// Front neckline shape.
-    #[param(default = CircleNeckHalf, prob = 0.4)]
-    pub f_collar: NeckShape,
-    /// Back neckline shape.
-    #[param(default = CircleNeckHalf, prob = 0.8)]
-    pub b_collar: NeckShape,
-    /// Neckline width (0 = the neck width, 1 = up to the shoulders).
-    #[param(range = 0..=1, default = 0.5, prob = 0.4)]
-    pub width: f64,
-    /// Angle of trapezoid and arc front necklines, degrees.
-    #[param(range = 70..=110, default = 95)]
-    pub fc_angle: i64,
-    /// Angle of trapezoid and arc back necklines, degrees.
-    #[param(range = 70..=110, default = 95)]
-    pub bc_angle: i64,
-    /// Control point x of a Bézier front neckline.
-    #[param(range = 0.05..=0.95, default = 0.5, prob = 0.4)]
-    pub f_bezier_x: f64,
-    /// Control point y of a Bézier front neckline.
-    #[param(range = 0.05..=0.95, default = 0.3)]
-    pub f_bezier_y: f64,
-    /// Control point x of a Bézier back neckline.
-    #[param(range = 0.05..=0.95, default = 0.5, prob = 0.4)]
-    pub b_bezier_x: f64,
-    /// Control point y of a Bézier back neckline.
-    #[param(range = 0.05..=0.95, default = 0.3)]
-    pub b_bezier_y: f64,
-    /// Mirror the curvature of the front neckline.
-    #[param(default = false, prob = 0.8)]
-    pub f_flip_curve: bool,
-    /// Mirror the curvature of the back neckline.
-    #[param(default = false, prob = 0.8)]
-    pub b_flip_curve: bool,
+    #[param(opening_dir_mix(default = 0.2), cuff(top_ruffle(range = 1..=2)))]
+    pub sleeve: Sleeve,
 }
 
 /// Two-panel skirt.
@@ -666,5 +541,12 @@ pub struct Pants {
     #[param(range = 0.5..=1, default = 1.0, prob = 0.3)]
     pub rise: f64,
     /// Cuffs.
-    pub cuff: PantsCuff,
+    #[param(
+        r#type(prob = 0.5),
+        top_ruffle(range = 1..=2),
+        cuff_len(prob = 0.3),
+        skirt_fraction(prob = None),
+        skirt_ruffle(prob = None)
+    )]
+    pub cuff: Cuff,
 }

@@ -1,7 +1,8 @@
 //! Godet skirt: a base skirt with triangular inserts sewn into slits of its hem.
 
 use crate::common::{v2, v3};
-use crate::design::{Design, GodetBase};
+use crate::design::{self, GodetBase};
+use crate::shared::{BottomOptions, SkirtGroups};
 use crate::skirt_paneled::{PencilSkirt, Skirt2};
 use garmentcode::math::SignumOrZero;
 use garmentcode::ops::{EdgeSide, cut_into_edge, distribute_horizontally};
@@ -69,12 +70,13 @@ pub struct GodetSkirt {
 }
 
 impl GodetSkirt {
-    /// Build from `godet-skirt` parameters.
-    pub fn new(a: &mut Arena, body: &Body, design: &Design, rise: Option<f64>) -> Result<GodetSkirt> {
-        let g = &design.godet_skirt;
+    /// Build from the `godet-skirt` group on a base skirt from `skirts`, with `opts`
+    /// (its rise).
+    pub fn new(a: &mut Arena, body: &Body, g: &design::GodetSkirt, skirts: SkirtGroups<'_>, opts: &BottomOptions) -> Result<GodetSkirt> {
+        let opts = BottomOptions { without_slits: true, ..opts.clone() };
         let base = match g.base {
-            GodetBase::Skirt2 => GodetBaseSkirt::Skirt2(Skirt2::new(a, body, design, "", None, rise, false, true)?),
-            GodetBase::PencilSkirt => GodetBaseSkirt::Pencil(PencilSkirt::new(a, body, design, None, rise, false)?),
+            GodetBase::Skirt2 => GodetBaseSkirt::Skirt2(Skirt2::new(a, body, skirts.skirt, &opts)?),
+            GodetBase::PencilSkirt => GodetBaseSkirt::Pencil(PencilSkirt::new(a, body, skirts.pencil_skirt, &opts)?),
         };
         let bottom = base.iface::<Bottom>();
         let pairs: Vec<(EdgeId, PanelId)> = bottom.edges(a).iter().copied().zip(bottom.panels(a).iter().copied()).collect();

@@ -24,9 +24,11 @@ pub mod meta;
 pub mod pants;
 pub mod sample;
 pub mod shapes;
+pub mod shared;
 pub mod skirt_levels;
 pub mod skirt_paneled;
 pub mod sleeves;
 
 pub use design::Design;
 pub use meta::MetaGarment;
+pub use shared::{Fit, Side};

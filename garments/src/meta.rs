@@ -7,6 +7,7 @@ use crate::circle_skirt::SkirtCircle;
 use crate::design::{BottomKind, Design, GodetBase, LevelsBase, UpperKind, WaistbandKind};
 use crate::godet::GodetSkirt;
 use crate::pants::Pants;
+use crate::shared::{BottomOptions, Fit, SkirtGroups, Symmetry};
 use crate::skirt_levels::SkirtLevels;
 use crate::skirt_paneled::{PencilSkirt, Skirt2, SkirtManyPanels};
 use garmentcode::slots::{Bottom, Top};
@@ -73,7 +74,11 @@ impl MetaGarment {
         let upper = match meta.upper {
             None => None,
             Some(kind) => {
-                let s = Shirt::new(a, body, design, kind == UpperKind::FittedShirt)?;
+                let fit = match kind {
+                    UpperKind::Shirt => Fit::Loose,
+                    UpperKind::FittedShirt => Fit::Fitted,
+                };
+                let s = Shirt::new(a, body, &design.shirt, &design.collar, &design.sleeve, &design.left, fit)?;
                 s.set_panel_label(a, "body", false);
                 Some(s)
             }
@@ -90,7 +95,11 @@ impl MetaGarment {
             None => None,
             Some(kind) => {
                 let rise = lower.as_ref().map(|l| l.rise()).unwrap_or(1.0);
-                let wb = Waistband::new(a, body, design, rise, kind == WaistbandKind::FittedWB)?;
+                let fit = match kind {
+                    WaistbandKind::StraightWB => Fit::Loose,
+                    WaistbandKind::FittedWB => Fit::Fitted,
+                };
+                let wb = Waistband::new(a, body, &design.waistband, rise, fit)?;
                 if let Some(prev) = prev_bottom {
                     wb.place_by_interface(a, wb.top, prev, 5.0, Align::Center);
                     stitches.push(StitchRule::new(a, prev, wb.top)?);
@@ -122,15 +131,17 @@ impl MetaGarment {
 }
 
 fn build_bottom(a: &mut Arena, body: &Body, design: &Design, kind: BottomKind, rise: Option<f64>) -> Result<BottomGarment> {
+    let opts = BottomOptions::at_rise(rise);
+    let skirts = SkirtGroups::of(design);
     Ok(match kind {
-        BottomKind::SkirtCircle => SkirtCircle::new(a, body, design, "", None, rise, true, false)?.into(),
-        BottomKind::AsymmSkirtCircle => SkirtCircle::new(a, body, design, "", None, rise, true, true)?.into(),
-        BottomKind::GodetSkirt => GodetSkirt::new(a, body, design, rise)?.into(),
-        BottomKind::Pants => Pants::new(a, body, design, rise)?.into(),
-        BottomKind::Skirt2 => Skirt2::new(a, body, design, "", None, rise, true, true)?.into(),
-        BottomKind::SkirtManyPanels => SkirtManyPanels::new(a, body, design, rise)?.into(),
-        BottomKind::PencilSkirt => PencilSkirt::new(a, body, design, None, rise, true)?.into(),
-        BottomKind::SkirtLevels => SkirtLevels::new(a, body, design, rise)?.into(),
+        BottomKind::SkirtCircle => SkirtCircle::new(a, body, &design.flare_skirt, Symmetry::Symmetric, &opts)?.into(),
+        BottomKind::AsymmSkirtCircle => SkirtCircle::new(a, body, &design.flare_skirt, Symmetry::Asymmetric, &opts)?.into(),
+        BottomKind::GodetSkirt => GodetSkirt::new(a, body, &design.godet_skirt, skirts, &opts)?.into(),
+        BottomKind::Pants => Pants::new(a, body, &design.pants, &opts)?.into(),
+        BottomKind::Skirt2 => Skirt2::new(a, body, &design.skirt, &opts)?.into(),
+        BottomKind::SkirtManyPanels => SkirtManyPanels::new(a, body, &design.flare_skirt, &opts)?.into(),
+        BottomKind::PencilSkirt => PencilSkirt::new(a, body, &design.pencil_skirt, &opts)?.into(),
+        BottomKind::SkirtLevels => SkirtLevels::new(a, body, &design.levels_skirt, skirts, &opts)?.into(),
     })
 }
 

@@ -2,8 +2,9 @@
 
 use crate::bands::{Cuff, CuffParams};
 use crate::common::{eval_rise, v2, v3};
-use crate::design::Design;
-use crate::skirt_paneled::{add_darts, tangent_curve};
+use crate::design;
+use crate::shared::{BottomOptions, Darts};
+use crate::skirt_paneled::{DartsFrom, add_darts, tangent_curve};
 use garmentcode::math::close_enough;
 use garmentcode::slots::Top;
 use garmentcode::{
@@ -51,13 +52,13 @@ pub struct PantSpec {
     pub match_top_int_to: Option<f64>,
     /// Extension of the hip depth (back).
     pub hipline_ext: f64,
-    /// Two darts.
-    pub double_dart: bool,
+    /// One or two darts.
+    pub darts: Darts,
 }
 
 impl PantPanel {
     /// Build one leg panel.
-    pub fn new(a: &mut Arena, name: &str, body: &Body, design: &crate::design::Pants, s: &PantSpec) -> Result<PantPanel> {
+    pub fn new(a: &mut Arena, name: &str, body: &Body, design: &design::Pants, s: &PantSpec) -> Result<PantPanel> {
         let flare = body.leg_circ * (design.flare - 1.0) / 4.0;
         let hips_depth = s.hips_depth * s.hipline_ext;
         let hip_side_incl = body.derived().hip_inclination.to_radians();
@@ -99,7 +100,7 @@ impl PantPanel {
         let bottom_i = a.interface(panel, bottom);
         let ruffle = s.match_top_int_to.map(|m| s.waist / m).unwrap_or(1.0);
         let top_i = if w_diff > hw_shift {
-            let (top_edges, int_edges) = add_darts(a, panel, top, w_diff - hw_shift, dart_depth, s.dart_position, s.double_dart, false)?;
+            let (top_edges, int_edges) = add_darts(a, panel, top, w_diff - hw_shift, dart_depth, s.dart_position, s.darts, DartsFrom::End)?;
             let i = a.interface_gathered(panel, int_edges, ruffle)?;
             let mut loop_edges = panel.edges(a).clone();
             loop_edges.substitute(top, &top_edges)?;
@@ -147,10 +148,9 @@ pub struct PantsHalf {
 }
 
 impl PantsHalf {
-    /// Build the leg `tag` (`r` or `l`).
-    pub fn new(a: &mut Arena, tag: &str, body: &Body, design: &Design, rise: Option<f64>) -> Result<PantsHalf> {
-        let d = &design.pants;
-        let rise = rise.unwrap_or(d.rise);
+    /// Build the leg `tag` (`r` or `l`) from the `pants` group with `opts` (its rise).
+    pub fn new(a: &mut Arena, tag: &str, body: &Body, d: &design::Pants, opts: &BottomOptions) -> Result<PantsHalf> {
+        let rise = opts.rise.unwrap_or(d.rise);
         let (waist, hips_depth, waist_back) = eval_rise(body, rise)?;
         let min_ext = body.leg_circ - body.hips / 2.0 + 5.0;
         let front_hip = (body.hips - body.hip_back_width) / 2.0;
@@ -184,7 +184,7 @@ impl PantsHalf {
                 dart_position: body.bust_points / 2.0,
                 match_top_int_to: Some((body.waist - body.waist_back_width) / 2.0),
                 hipline_ext: 1.0,
-                double_dart: false,
+                darts: Darts::Single,
             },
         )?;
         front.panel.translate_by(a, v3(0.0, level - 5.0, 25.0));
@@ -202,7 +202,7 @@ impl PantsHalf {
                 dart_position: body.bum_points / 2.0,
                 match_top_int_to: Some(body.waist_back_width / 2.0),
                 hipline_ext: 1.1,
-                double_dart: true,
+                darts: Darts::Double,
             },
         )?;
         back.panel.translate_by(a, v3(0.0, level - 5.0, -20.0));
@@ -272,10 +272,10 @@ pub struct Pants {
 }
 
 impl Pants {
-    /// Build both legs.
-    pub fn new(a: &mut Arena, body: &Body, design: &Design, rise: Option<f64>) -> Result<Pants> {
-        let right = PantsHalf::new(a, "r", body, design, rise)?;
-        let left = PantsHalf::new(a, "l", body, design, rise)?;
+    /// Build both legs from the `pants` group with `opts` (its rise).
+    pub fn new(a: &mut Arena, body: &Body, d: &design::Pants, opts: &BottomOptions) -> Result<Pants> {
+        let right = PantsHalf::new(a, "r", body, d, opts)?;
+        let left = PantsHalf::new(a, "l", body, d, opts)?;
         left.mirror(a);
         let stitches = vec![StitchRule::new(a, right.crotch_f, left.crotch_f)?, StitchRule::new(a, right.crotch_b, left.crotch_b)?];
         let top_f = a.interface_from(&[right.top_f, left.top_f]);

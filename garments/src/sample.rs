@@ -21,8 +21,8 @@ use crate::Design;
 use crate::build::{Built, Refusal, build_valid_in};
 use crate::design::{BottomKind, GodetBase, UpperKind};
 use crate::meta::check_param_combinations;
-use garmentcode::params::{DesignError, Sampler, below, sample_rng};
-use garmentcode::{Arena, Body, DesignSpace, Params};
+use garmentcode::io::DesignError;
+use garmentcode::{Arena, Body, DesignSpace, Params, Sampler, below, sample_rng};
 use rand_chacha::rand_core::RngCore;
 use std::fmt;
 

@@ -4,11 +4,10 @@
 
 use crate::common::v2;
 use crate::design::NeckShape;
-use garmentcode::arc::{self, SvgArc};
-use garmentcode::curves::match_tangents;
-use garmentcode::math::{Vec2, close_enough, norm};
-use garmentcode::svgpath::{SvgPath, halves_from_outlines};
-use garmentcode::{Arena, Curve, Edge, EdgeSeq, Result};
+use garmentcode::curves::{self, match_tangents};
+use garmentcode::math::{close_enough, norm};
+use garmentcode::parity::svgpath::{SvgPath, halves_from_outlines};
+use garmentcode::{Arena, Curve, Edge, EdgeSeq, Result, SvgArc, Vec2};
 
 /// Parameters of a half neckline shape.
 #[derive(Clone, Copy, Debug)]
@@ -48,7 +47,7 @@ pub fn neckline(a: &mut Arena, shape: NeckShape, depth: f64, width: f64, args: N
             Ok(EdgeSeq(vec![e]))
         }
         NeckShape::CircleArcNeckHalf => {
-            let cy = arc::cy_from_angle(args.angle.to_radians(), !args.flip);
+            let cy = curves::cy_from_angle(args.angle.to_radians(), !args.flip);
             Ok(EdgeSeq(vec![a.add_edge(Edge { start: v2(0.0, 0.0), end, curve: Curve::Arc { cy } })?]))
         }
         NeckShape::CircleNeckHalf => circle_neck(a, depth, width),
@@ -68,7 +67,7 @@ fn v_neck(a: &mut Arena, depth: f64, width: f64) -> Result<EdgeSeq> {
 /// to its mirror image it forms a perfect arc.
 pub fn circle_neck(a: &mut Arena, depth: f64, width: f64) -> Result<EdgeSeq> {
     let (s, e) = (v2(0.0, 0.0), v2(width, 0.0));
-    let cy = arc::cy_from_three_points(s, e, v2(width / 2.0, -depth));
+    let cy = curves::cy_from_three_points(s, e, v2(width / 2.0, -depth));
     let full = a.add_edge(Edge { start: s, end: e, curve: Curve::Arc { cy } })?;
     let halves = a.subdivide(full, &[0.5, 0.5], true)?;
     Ok(EdgeSeq(vec![halves[0]]))
@@ -118,11 +117,11 @@ pub fn sleeve_opening(a: &mut Arena, incl: f64, width: f64, angle: f64, bottom_a
 
 /// Sun-like decorative cut: rays alternating between two concentric arcs.
 pub fn sun(a: &mut Arena, width: f64, depth: f64, n_rays: usize, d_rays: f64) -> Result<EdgeSeq> {
-    let out_cy = arc::cy_from_three_points(v2(0.0, 0.0), v2(width, 0.0), v2(width / 2.0, depth));
-    let in_cy = arc::cy_from_three_points(v2(d_rays, 0.0), v2(width - d_rays, 0.0), v2(width / 2.0, depth - d_rays));
+    let out_cy = curves::cy_from_three_points(v2(0.0, 0.0), v2(width, 0.0), v2(width / 2.0, depth));
+    let in_cy = curves::cy_from_three_points(v2(d_rays, 0.0), v2(width - d_rays, 0.0), v2(width / 2.0, depth - d_rays));
     let out_edge = Edge { start: v2(0.0, 0.0), end: v2(width, 0.0), curve: Curve::Arc { cy: out_cy } };
     let in_edge = Edge { start: v2(d_rays, 0.0), end: v2(width - d_rays, 0.0), curve: Curve::Arc { cy: in_cy } };
-    let (out_curve, in_curve) = (arc::svg_arc(out_edge.start, out_edge.end, out_cy), arc::svg_arc(in_edge.start, in_edge.end, in_cy));
+    let (out_curve, in_curve) = (curves::svg_arc(out_edge.start, out_edge.end, out_cy), curves::svg_arc(in_edge.start, in_edge.end, in_cy));
     let (out_len, in_len) = (out_edge.length(), in_edge.length());
     let (out_stride, in_stride) = (out_len / n_rays as f64, in_len / n_rays as f64);
     let sample = |c: &SvgArc, length: f64, stride: f64, n: usize, shift: f64| -> Vec<Vec2> {
@@ -139,7 +138,7 @@ pub fn sun(a: &mut Arena, width: f64, depth: f64, n_rays: usize, d_rays: f64) ->
 
 /// The SIGGRAPH logo split into left and right halves of chains (decorative cut),
 /// `width` high: the bundled outlines ([`crate::logo`]) through
-/// [`garmentcode::svgpath::halves_from_outlines`]. Which short pieces are left out
+/// [`garmentcode::parity::svgpath::halves_from_outlines`]. Which short pieces are left out
 /// depends on the scale, so the halves are computed for every width.
 pub fn siggraph_logo(a: &mut Arena, width: f64) -> Result<(Vec<EdgeSeq>, Vec<EdgeSeq>)> {
     let outlines: Vec<SvgPath> = crate::logo::OUTLINES.iter().map(|o| SvgPath(o.to_vec())).collect();

@@ -2,7 +2,8 @@
 //! the hem of the one above.
 
 use crate::circle_skirt::SkirtCircle;
-use crate::design::{Design, LevelKind, LevelsBase};
+use crate::design::{self, LevelKind, LevelsBase};
+use crate::shared::{BottomOptions, SkirtGroups, Symmetry};
 use crate::skirt_paneled::{PencilSkirt, Skirt2};
 use garmentcode::slots::{Bottom, BottomB, Top};
 use garmentcode::{Align, Arena, Body, Component, InterfaceId, PartExt, Result, Rotation, SlotExt, StitchRule};
@@ -36,22 +37,23 @@ pub struct SkirtLevels {
 }
 
 impl SkirtLevels {
-    /// Build from `levels-skirt` parameters.
-    pub fn new(a: &mut Arena, body: &Body, design: &Design, rise: Option<f64>) -> Result<SkirtLevels> {
-        let l = &design.levels_skirt;
+    /// Build from the `levels-skirt` group, the base and tiers from `skirts`, with
+    /// `opts` (its rise).
+    pub fn new(a: &mut Arena, body: &Body, l: &design::LevelsSkirt, skirts: SkirtGroups<'_>, opts: &BottomOptions) -> Result<SkirtLevels> {
         let leg = body.derived().leg_length;
         let total = l.length * leg;
         let base_len0 = total * l.base_length_frac;
         let level_len = (total - base_len0) / l.num_levels as f64;
         // QUIRK: the base always adds the hip depth of the *parameter* rise.
         let base_len = body.hips_line * l.rise + base_len0;
-        let rise = rise.unwrap_or(l.rise);
+        let rise = opts.rise.unwrap_or(l.rise);
+        let base_opts = BottomOptions { length: Some(base_len), rise: Some(rise), without_slits: true, ..opts.clone() };
         let base = match l.base {
-            LevelsBase::Skirt2 => Stackable::Skirt2(Skirt2::new(a, body, design, "", Some(base_len), Some(rise), false, true)?),
-            LevelsBase::PencilSkirt => Stackable::Pencil(PencilSkirt::new(a, body, design, Some(base_len), Some(rise), false)?),
-            LevelsBase::SkirtCircle => Stackable::Circle(SkirtCircle::new(a, body, design, "", Some(base_len), Some(rise), false, false)?),
+            LevelsBase::Skirt2 => Stackable::Skirt2(Skirt2::new(a, body, skirts.skirt, &base_opts)?),
+            LevelsBase::PencilSkirt => Stackable::Pencil(PencilSkirt::new(a, body, skirts.pencil_skirt, &base_opts)?),
+            LevelsBase::SkirtCircle => Stackable::Circle(SkirtCircle::new(a, body, skirts.flare_skirt, Symmetry::Symmetric, &base_opts)?),
             LevelsBase::AsymmSkirtCircle => {
-                Stackable::Circle(SkirtCircle::new(a, body, design, "", Some(base_len), Some(rise), false, true)?)
+                Stackable::Circle(SkirtCircle::new(a, body, skirts.flare_skirt, Symmetry::Asymmetric, &base_opts)?)
             }
         };
         let angle = match &base {
@@ -66,15 +68,14 @@ impl SkirtLevels {
             let prev = tiers.last().expect("base");
             lbody.waist = ruffle * prev.iface::<Bottom>().length(a);
             lbody.waist_back_width = ruffle * prev.iface::<BottomB>().length(a);
-            let tag = i.to_string();
             // QUIRK: a tier takes its own `rise` parameter with the overwritten waist.
+            let tier =
+                BottomOptions { tag: i.to_string(), length: Some(level_len), rise: None, without_slits: true, without_gathers: true };
             let level = match l.level {
-                LevelKind::Skirt2 => Stackable::Skirt2(Skirt2::new(a, &lbody, design, &tag, Some(level_len), None, false, false)?),
-                LevelKind::SkirtCircle => {
-                    Stackable::Circle(SkirtCircle::new(a, &lbody, design, &tag, Some(level_len), None, false, false)?)
-                }
+                LevelKind::Skirt2 => Stackable::Skirt2(Skirt2::new(a, &lbody, skirts.skirt, &tier)?),
+                LevelKind::SkirtCircle => Stackable::Circle(SkirtCircle::new(a, &lbody, skirts.flare_skirt, Symmetry::Symmetric, &tier)?),
                 LevelKind::AsymmSkirtCircle => {
-                    Stackable::Circle(SkirtCircle::new(a, &lbody, design, &tag, Some(level_len), None, false, true)?)
+                    Stackable::Circle(SkirtCircle::new(a, &lbody, skirts.flare_skirt, Symmetry::Asymmetric, &tier)?)
                 }
             };
             level.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, -angle]));

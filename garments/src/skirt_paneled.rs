@@ -2,8 +2,9 @@
 //! skirt with darts, slits and decorative side cuts.
 
 use crate::common::{eval_rise, tan_deg, v2, v3};
-use crate::design::{Design, SideCut};
+use crate::design::{self, SideCut};
 use crate::shapes;
+use crate::shared::{BottomOptions, Darts, GatherTo};
 use garmentcode::curves::quadratic_from_tangents;
 use garmentcode::math::close_enough;
 use garmentcode::ops::{Cut, DartSize, EdgeSide, ShapeOrder, cut_into_edge, cut_many_into_edge, dart_shape, distribute_y, side_with_cut};
@@ -41,14 +42,15 @@ pub struct SkirtPanel {
 }
 
 impl SkirtPanel {
-    /// Trapezoid of waist `waist_length·ruffles` widened by `flare` per side at the hem.
+    /// Trapezoid of waist `waist_length·ruffles` widened by `flare` per side at the
+    /// hem; the waist gathered to `gather.top` (or by `ruffles` when not set).
     pub fn new(
         a: &mut Arena,
         name: &str,
         waist_length: f64,
         length: f64,
         ruffles: f64,
-        match_top_int_to: Option<f64>,
+        gather: GatherTo,
         bottom_cut: f64,
         flare: f64,
     ) -> Result<SkirtPanel> {
@@ -77,7 +79,7 @@ impl SkirtPanel {
         edges.push(bottom);
         let panel = a.panel_with_edges(name, edges);
         let r = a.interface(panel, right.last_edge());
-        let ruffle = match match_top_int_to {
+        let ruffle = match gather.top {
             Some(m) => a.edge_length(waist) / m,
             None => ruffles,
         };
@@ -124,7 +126,7 @@ impl ThinSkirtPanel {
         } else {
             let (s, e) = (a.end(edges.last_edge()), a.start(edges[0]));
             let through = garmentcode::math::rel_to_abs(a.pos(s), a.pos(e), v2(0.5, b_curvature));
-            let cy = garmentcode::arc::cy_from_three_points(a.pos(s), a.pos(e), through);
+            let cy = garmentcode::curves::cy_from_three_points(a.pos(s), a.pos(e), through);
             edges.push(a.edge(s, e, Curve::Arc { cy })?);
         }
         let panel = a.panel_with_edges(name, edges.clone());
@@ -154,8 +156,8 @@ pub struct FittedPanelSpec<'s> {
     pub dart_position: f64,
     /// Dart depth as a fraction of the hip depth.
     pub dart_frac: f64,
-    /// Two darts per side.
-    pub double_dart: bool,
+    /// One or two darts per side.
+    pub darts: Darts,
     /// Waist measure the top interface's gathers are proportioned to.
     pub match_top_int_to: Option<f64>,
     /// Centre slit (fraction of the length).
@@ -201,13 +203,7 @@ pub struct FittedSkirtPanel {
 
 impl FittedSkirtPanel {
     /// Build the panel from the pencil-skirt design and the per-side spec.
-    pub fn new(
-        a: &mut Arena,
-        name: &str,
-        body: &Body,
-        design: &crate::design::PencilSkirt,
-        s: &FittedPanelSpec,
-    ) -> Result<FittedSkirtPanel> {
+    pub fn new(a: &mut Arena, name: &str, body: &Body, design: &design::PencilSkirt, s: &FittedPanelSpec) -> Result<FittedSkirtPanel> {
         let d = body.derived();
         let low_angle = design.low_angle as f64;
         let hip_side_incl = d.hip_inclination.to_radians();
@@ -291,7 +287,8 @@ impl FittedSkirtPanel {
         let last = right.len() - 1;
         set_flip(a, right_i, last);
         let top_i = if w_diff > hw_shift {
-            let (top_edges, int_edges) = add_darts(a, panel, top, w_diff - hw_shift, dart_depth, s.dart_position, s.double_dart, true)?;
+            let (top_edges, int_edges) =
+                add_darts(a, panel, top, w_diff - hw_shift, dart_depth, s.dart_position, s.darts, DartsFrom::Middle)?;
             let ruffle = s.match_top_int_to.map(|m| int_edges.length(a) / m).unwrap_or(1.0);
             let i = a.interface_gathered(panel, int_edges, ruffle)?;
             let mut loop_edges = panel.edges(a).clone();
@@ -311,9 +308,18 @@ pub(crate) fn set_flip(a: &mut Arena, i: InterfaceId, edge: usize) {
     i.set_flip(a, edge, true);
 }
 
-/// Cut waist darts into `top`, measured from the middle of the edge (skirts, with
-/// `from_middle`) or from its end (trousers). Returns the edges replacing `top` and
-/// the remaining waist pieces.
+/// Where waist darts are measured from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum DartsFrom {
+    /// The middle of the waist edge (skirts: darts on both sides).
+    Middle,
+    /// The end of the waist edge (trousers).
+    End,
+}
+
+/// Cut waist darts into `top`, measured from the middle of the edge (skirts) or from
+/// its end (trousers). Returns the edges replacing `top` and the remaining waist
+/// pieces.
 pub(crate) fn add_darts(
     a: &mut Arena,
     panel: PanelId,
@@ -321,10 +327,11 @@ pub(crate) fn add_darts(
     dart_width: f64,
     dart_depth: f64,
     dart_position: f64,
-    double_dart: bool,
-    from_middle: bool,
+    darts: Darts,
+    from: DartsFrom,
 ) -> Result<(EdgeSeq, EdgeSeq)> {
     let top_len = a.edge_length(top);
+    let (double_dart, from_middle) = (darts == Darts::Double, from == DartsFrom::Middle);
     let (offsets, darts): (Vec<f64>, Vec<EdgeSeq>) = if from_middle {
         if double_dart {
             let dist = dart_position * 0.5;
@@ -403,10 +410,9 @@ pub struct PencilSkirt {
 }
 
 impl PencilSkirt {
-    /// Build from `pencil-skirt` parameters; `length` (which then includes the hip
-    /// depth) and `rise` override them; `slit = false` drops every slit.
-    pub fn new(a: &mut Arena, body: &Body, design: &Design, length: Option<f64>, rise: Option<f64>, slit: bool) -> Result<PencilSkirt> {
-        let d = &design.pencil_skirt;
+    /// Build from the `pencil-skirt` group with `opts` (a length there includes the
+    /// hip depth).
+    pub fn new(a: &mut Arena, body: &Body, d: &design::PencilSkirt, opts: &BottomOptions) -> Result<PencilSkirt> {
         let (shape_l, shape_r) = match d.style_side_cut {
             None => (None, None),
             Some(kind) => {
@@ -423,13 +429,13 @@ impl PencilSkirt {
                 }
             }
         };
-        let rise = rise.unwrap_or(d.rise);
+        let rise = opts.rise.unwrap_or(d.rise);
         let (waist, hips_depth, back_waist) = eval_rise(body, rise)?;
-        let length = match length {
+        let length = match opts.length {
             None => d.length * body.derived().leg_length,
             Some(l) => l - hips_depth,
         };
-        let pick = |x: f64| if slit { x } else { 0.0 };
+        let pick = |x: f64| if opts.without_slits { 0.0 } else { x };
         let waist_level = body.derived().waist_level;
         let front = FittedSkirtPanel::new(
             a,
@@ -444,7 +450,7 @@ impl PencilSkirt {
                 hipline_ext: 1.0,
                 dart_position: body.bust_points / 2.0,
                 dart_frac: 0.8,
-                double_dart: false,
+                darts: Darts::Single,
                 match_top_int_to: Some(body.waist - body.waist_back_width),
                 slit: pick(d.front_slit),
                 left_slit: pick(d.left_slit),
@@ -467,7 +473,7 @@ impl PencilSkirt {
                 hipline_ext: 1.05,
                 dart_position: body.bum_points / 2.0,
                 dart_frac: 0.85,
-                double_dart: true,
+                darts: Darts::Double,
                 match_top_int_to: Some(body.waist_back_width),
                 slit: pick(d.back_slit),
                 left_slit: pick(d.left_slit),
@@ -538,26 +544,15 @@ pub struct Skirt2 {
 }
 
 impl Skirt2 {
-    /// Build from `skirt` parameters; `length` and `rise` override them; `slit` and
-    /// `top_ruffles = false` drop the side slits and the waist gathers (tiers).
-    pub fn new(
-        a: &mut Arena,
-        body: &Body,
-        design: &Design,
-        tag: &str,
-        length: Option<f64>,
-        rise: Option<f64>,
-        slit: bool,
-        top_ruffles: bool,
-    ) -> Result<Skirt2> {
-        let d = &design.skirt;
-        let rise = rise.unwrap_or(d.rise);
+    /// Build from the `skirt` group with `opts`.
+    pub fn new(a: &mut Arena, body: &Body, d: &design::Skirt, opts: &BottomOptions) -> Result<Skirt2> {
+        let rise = opts.rise.unwrap_or(d.rise);
         let (waist, hip_line, back_waist) = eval_rise(body, rise)?;
-        let length = length.unwrap_or(hip_line + d.length * body.derived().leg_length).max(5.0);
-        let name = |base: &str| if tag.is_empty() { base.to_string() } else { format!("{base}_{tag}") };
-        let ruffles = if top_ruffles { d.ruffle } else { 1.0 };
+        let length = opts.length.unwrap_or(hip_line + d.length * body.derived().leg_length).max(5.0);
+        let name = |base: &str| opts.name(base);
+        let ruffles = if opts.without_gathers { 1.0 } else { d.ruffle };
         // QUIRK: the slit is scaled by the length *parameter*, not the length in cm.
-        let bottom_cut = if slit { d.bottom_cut * d.length } else { 0.0 };
+        let bottom_cut = if opts.without_slits { 0.0 } else { d.bottom_cut * d.length };
         let waist_level = body.derived().waist_level;
         let flare = d.flare as f64;
         let front = SkirtPanel::new(
@@ -566,12 +561,13 @@ impl Skirt2 {
             waist - back_waist,
             length,
             ruffles,
-            Some(body.waist - body.waist_back_width),
+            GatherTo::top(body.waist - body.waist_back_width),
             bottom_cut,
             flare,
         )?;
         front.panel.translate_to(a, v3(0.0, waist_level, 25.0));
-        let back = SkirtPanel::new(a, &name("skirt_back"), back_waist, length, ruffles, Some(body.waist_back_width), bottom_cut, flare)?;
+        let back =
+            SkirtPanel::new(a, &name("skirt_back"), back_waist, length, ruffles, GatherTo::top(body.waist_back_width), bottom_cut, flare)?;
         back.panel.translate_to(a, v3(0.0, waist_level, -20.0));
         let stitches = vec![StitchRule::new(a, front.right, back.right)?, StitchRule::new(a, front.left, back.left)?];
         let top = a.interface_from(&[front.top, back.top]);
@@ -613,10 +609,9 @@ pub struct SkirtManyPanels {
 }
 
 impl SkirtManyPanels {
-    /// Build from `flare-skirt` parameters.
-    pub fn new(a: &mut Arena, body: &Body, design: &Design, rise: Option<f64>) -> Result<SkirtManyPanels> {
-        let d = &design.flare_skirt;
-        let rise = rise.unwrap_or(d.rise);
+    /// Build from the `flare-skirt` group with `opts` (its rise).
+    pub fn new(a: &mut Arena, body: &Body, d: &design::FlareSkirt, opts: &BottomOptions) -> Result<SkirtManyPanels> {
+        let rise = opts.rise.unwrap_or(d.rise);
         let (waist, hip_line, _) = eval_rise(body, rise)?;
         let n = d.skirt_many_panels.n_panels as usize;
         let length = (hip_line + d.length * body.derived().leg_length).max(5.0);

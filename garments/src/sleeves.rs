@@ -2,9 +2,8 @@
 //! armhole (the sleeve opening), cuffs.
 
 use crate::bands::{Cuff, CuffParams};
-use crate::bodice::SleeveParams;
 use crate::common::{v2, v3};
-use crate::design::ArmholeShape;
+use crate::design::{self, ArmholeShape};
 use crate::shapes;
 use garmentcode::math::close_enough;
 use garmentcode::ops::even_armhole_openings;
@@ -36,10 +35,10 @@ pub struct SleevePanel {
 
 impl SleevePanel {
     /// Build around `open_shape` (the opening chain, moved into the panel).
-    pub fn new(a: &mut Arena, name: &str, body: &Body, s: &SleeveParams, open_shape: &EdgeSeq, length_shift: f64) -> Result<SleevePanel> {
+    pub fn new(a: &mut Arena, name: &str, body: &Body, s: &design::Sleeve, open_shape: &EdgeSeq, length_shift: f64) -> Result<SleevePanel> {
         let d = body.derived();
         let shoulder_angle = d.shoulder_incl.to_radians();
-        let rest_angle = f64::max(s.sleeve_angle.to_radians(), shoulder_angle);
+        let rest_angle = f64::max((s.sleeve_angle as f64).to_radians(), shoulder_angle);
         let mut standing = s.standing_shoulder;
         let (o0, o1) = open_shape.shortcut(a);
         let end_width = f64::max(s.end_width * (o0.y - o1.y).abs(), body.wrist / 2.0);
@@ -74,7 +73,7 @@ impl SleevePanel {
         }
         let panel = a.panel_with_edges(name, edges.clone());
         let in_ = a.interface_gathered(panel, open_shape.clone(), s.connect_ruffle)?;
-        let out = a.interface_gathered(panel, edges[0], s.cuff_top_ruffle)?;
+        let out = a.interface_gathered(panel, edges[0], s.cuff.top_ruffle)?;
         let top = if standing { a.interface(panel, edges.slice(-2, edges.len() as isize)) } else { a.interface(panel, edges.last_edge()) };
         let bottom = a.interface(panel, edges[1]);
         panel.set_length_interface(a, bottom);
@@ -124,7 +123,7 @@ impl Sleeve {
         a: &mut Arena,
         tag: &str,
         body: &Body,
-        s: &SleeveParams,
+        s: &design::Sleeve,
         connecting_width: f64,
         front_w: f64,
         back_w: f64,
@@ -159,7 +158,7 @@ impl Sleeve {
         a: &mut Arena,
         tag: &str,
         body: &Body,
-        s: &SleeveParams,
+        s: &design::Sleeve,
         connecting_width: f64,
         front_w: f64,
         back_w: f64,
@@ -169,7 +168,7 @@ impl Sleeve {
         }
         let d = body.derived();
         let sleeve_balance = d.base_sleeve_balance / 2.0;
-        let rest_angle = f64::max(s.sleeve_angle.to_radians(), d.shoulder_incl.to_radians());
+        let rest_angle = f64::max((s.sleeve_angle as f64).to_radians(), d.shoulder_incl.to_radians());
         let opening = |a: &mut Arena, incl: f64| shapes::sleeve_opening(a, incl, connecting_width, rest_angle, s.opening_dir_mix);
         let mut front_opening = opening(a, front_w - sleeve_balance)?;
         let mut back_opening = opening(a, back_w - sleeve_balance)?;
@@ -177,9 +176,9 @@ impl Sleeve {
             let tol = 0.2 / front_opening.length(a);
             even_armhole_openings(a, &mut front_opening, &mut back_opening, tol)?;
         }
-        let cuff_len_adj = match s.cuff_type {
+        let cuff_len_adj = match s.cuff.r#type {
             None => 0.0,
-            Some(_) => f64::min(s.cuff_len * body.arm_length, s.length * body.arm_length * 0.7),
+            Some(_) => f64::min(s.cuff.cuff_len * body.arm_length, s.length * body.arm_length * 0.7),
         };
         let front = SleevePanel::new(a, &format!("{tag}_sleeve_f"), body, s, &front_opening, -cuff_len_adj)?;
         front.panel.translate_by(a, v3(0.0, 0.0, 15.0));
@@ -192,14 +191,14 @@ impl Sleeve {
         let mut out = a.interface_from(&[front.out, back.out]);
         self.front = Some(front);
         self.back = Some(back);
-        if let Some(kind) = s.cuff_type {
-            let circ = f64::max(out.length(a) / s.cuff_top_ruffle, body.wrist);
+        if let Some(kind) = s.cuff.r#type {
+            let circ = f64::max(out.length(a) / s.cuff.top_ruffle, body.wrist);
             let params = CuffParams {
                 b_width: circ,
                 cuff_len: cuff_len_adj,
-                skirt_fraction: s.cuff_skirt_fraction,
-                skirt_flare: s.cuff_skirt_flare,
-                skirt_ruffle: s.cuff_skirt_ruffle,
+                skirt_fraction: s.cuff.skirt_fraction,
+                skirt_flare: s.cuff.skirt_flare,
+                skirt_ruffle: s.cuff.skirt_ruffle,
             };
             let cuff = Cuff::new(a, kind, &format!("sl_{tag}"), &params)?;
             cuff.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, -90.0]));

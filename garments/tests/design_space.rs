@@ -2,8 +2,7 @@
 //! path, type, range or options, default and probability (figures from the
 //! reference's `default.yaml`, 122 parameters, in document order).
 
-use garmentcode::Params;
-use garmentcode::params::{Kind, Range, Value};
+use garmentcode::{Kind, Params, Range, Value};
 use garments::Design;
 
 #[derive(Debug)]
@@ -188,7 +187,7 @@ fn design_space_equals_the_reference_default_design() {
 /// design, and writing is stable).
 #[test]
 fn design_files_keep_every_value_through_read_and_write() {
-    use garmentcode::params::{read_design, read_design_values, write_design};
+    use garmentcode::io::{read_design, read_design_values, write_design};
     let space = Design::design_space();
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data/cases");
     let mut n = 0;

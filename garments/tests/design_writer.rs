@@ -1,7 +1,7 @@
 //! `DesignWriter` writes the same design files as `write_design`, byte for byte.
 
-use garmentcode::Params;
-use garmentcode::params::{DesignWriter, Sampler, Value, sample_rng, write_design};
+use garmentcode::io::{DesignWriter, write_design};
+use garmentcode::{Params, Sampler, Value, sample_rng};
 use garments::Design;
 
 #[test]

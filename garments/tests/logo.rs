@@ -7,9 +7,9 @@
 //!   `tools/gen_logo_data.py cases`) judged against the reference's patterns like the
 //!   parity test.
 
-use garmentcode::compare::{CompareOptions, compare_spec_texts};
-use garmentcode::params::read_design;
+use garmentcode::io::read_design;
 use garmentcode::{Arena, Body, Curve, EdgeSeq, Params, Vec2};
+use garmentcode_compare::{CompareOptions, compare_spec_texts};
 use garments::build::{BuildError, build_in};
 use garments::meta::check_param_combinations;
 use garments::shapes::siggraph_logo;

@@ -13,12 +13,12 @@ fn named_designs_are_pinned() {
         let design = builtin::design(name).unwrap();
         let built = garments::build::build(&design, &body, name).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(built.checks.passed(), "{name}: {:?}", built.checks.warnings());
-        let problems = garmentcode::pattern::validate(&built.pattern);
-        assert!(problems.iter().all(|p| p.severity != garmentcode::pattern::Severity::Error), "{name}: {problems:?}");
+        let problems = garmentcode::validate(&built.pattern);
+        assert!(problems.iter().all(|p| p.severity != garmentcode::Severity::Error), "{name}: {problems:?}");
         let reference = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../tests/data/named/{name}/specification.json"));
         let reference = std::fs::read_to_string(&reference).unwrap_or_else(|e| panic!("{}: {e}", reference.display()));
         let json = built.pattern.to_json().unwrap();
-        let verdict = garmentcode::compare::compare_spec_texts(&reference, &json, &Default::default());
+        let verdict = garmentcode_compare::compare_spec_texts(&reference, &json, &Default::default());
         assert!(verdict.pass, "{name} differs from the reference: {:?}", verdict.reasons);
         insta::assert_snapshot!(format!("{name}-{}", builtin::DEFAULT_BODY), json);
     }

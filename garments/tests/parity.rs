@@ -1,13 +1,13 @@
 //! Parity with the reference implementation on the 62 public reference cases
 //! (`tests/data/cases`): every case's design and body are built and the pattern is
 //! judged against the reference's by geometry (0.05 cm, with the chaotic rule for
-//! sleeve, cuff and hood panels; see `garmentcode::compare`); designs the reference
+//! sleeve, cuff and hood panels; see `garmentcode_compare`); designs the reference
 //! rejects are rejected for the same reason; and the validity checks
 //! (`checks.json`) give the same verdicts.
 
-use garmentcode::compare::{CompareOptions, compare_spec_texts};
-use garmentcode::params::read_design;
+use garmentcode::io::read_design;
 use garmentcode::{Arena, Params};
+use garmentcode_compare::{CompareOptions, compare_spec_texts};
 use garments::build::{BuildError, build_in};
 use garments::meta::check_param_combinations;
 use garments::{Design, builtin};

@@ -2,9 +2,9 @@
 //! project's design files and freshly written ones, and on mutated files they
 //! either defer (`None`) or return exactly the full reader's design.
 
-use garmentcode::Params;
-use garmentcode::params::testing::{read_design_fast, read_design_full, read_design_lines, read_design_skeleton};
-use garmentcode::params::{DesignSpace, Sampler, sample_rng, write_design};
+use garmentcode::io::testing::{read_design_fast, read_design_full, read_design_lines, read_design_skeleton};
+use garmentcode::io::write_design;
+use garmentcode::{DesignSpace, Params, Sampler, sample_rng};
 use garments::Design;
 use std::path::Path;
 use std::sync::OnceLock;
@@ -336,7 +336,7 @@ fn layout_reader_agrees_on_changed_values() {
         .params()
         .iter()
         .filter_map(|p| match &p.range {
-            garmentcode::params::Range::Options(o) => Some(o.iter().map(|v| v.to_string()).collect::<Vec<_>>()),
+            garmentcode::Range::Options(o) => Some(o.iter().map(|v| v.to_string()).collect::<Vec<_>>()),
             _ => None,
         })
         .flatten()

@@ -1,25 +1,25 @@
 //! `garmentcode check SPEC.json [--strict] [--format text|json]`
 
-use crate::args::{Args, UsageError};
+use crate::cli::{CheckArgs, CheckFormat};
 use crate::commands::{CliError, read_pattern};
-use garmentcode::pattern::{Problem, Severity, validate};
+use garmentcode::{Problem, ProblemKind, Severity, validate};
 use serde_json::json;
 
-pub fn run(mut args: Args) -> Result<i32, CliError> {
-    let strict = args.switch("strict");
-    let format = args.value("format")?.unwrap_or_else(|| "text".into());
-    if format != "text" && format != "json" {
-        return Err(UsageError(format!("check --format: expected text or json, got '{format}'")).into());
-    }
-    let files = args.finish()?;
-    let [file] = files.as_slice() else {
-        return Err(UsageError("check: expects exactly one SPEC.json file".into()).into());
-    };
+/// Whether `build --strict` rejects a pattern with this warning. Stitched edges of
+/// different lengths are gathers wherever a design asks for them, so they are
+/// reported but never fail `--strict`; self-intersections fail both.
+pub fn fails_strict(p: &Problem) -> bool {
+    p.severity == Severity::Warning && p.kind == ProblemKind::SelfIntersection
+}
+
+pub fn run(args: CheckArgs) -> Result<i32, CliError> {
+    let file = &args.file;
     let pattern = read_pattern(file)?;
     let problems = validate(&pattern);
     let errors = problems.iter().filter(|p| p.severity == Severity::Error).count();
     let warnings = problems.len() - errors;
-    if format == "json" {
+    let strict_failures = problems.iter().filter(|p| fails_strict(p)).count();
+    if args.format == CheckFormat::Json {
         let list: Vec<serde_json::Value> = problems.iter().map(problem_json).collect();
         let report = json!({ "file": file, "errors": errors, "warnings": warnings, "problems": list });
         outln!("{}", serde_json::to_string_pretty(&report).expect("report serialises"));
@@ -29,7 +29,7 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
         }
         outln!("{file}: {} panels, {} stitches: {errors} error(s), {warnings} warning(s)", pattern.panels.len(), pattern.stitches.len());
     }
-    Ok(if errors > 0 || (strict && warnings > 0) { 1 } else { 0 })
+    Ok(if errors > 0 || (args.strict && strict_failures > 0) { 1 } else { 0 })
 }
 
 fn problem_json(p: &Problem) -> serde_json::Value {

@@ -1,49 +1,47 @@
 //! `garmentcode compare EXPECTED ACTUAL [--cases] [--tol CM] [--strict] [-v]`:
 //! judge whether two patterns are the same garment by their geometry.
 
-use crate::args::{Args, UsageError};
+use crate::cli::CompareArgs;
 use crate::commands::CliError;
-use garmentcode::compare::{self, CompareOptions};
-use std::path::Path;
+use garmentcode_compare::{self as compare, CompareOptions};
 
-pub fn run(mut args: Args) -> Result<i32, CliError> {
-    let mut opts = CompareOptions::default();
-    if let Some(t) = args.value("tol")? {
-        opts.tol = match t.trim().parse::<f64>() {
-            Ok(x) if x.is_finite() && x > 0.0 => x,
-            _ => return Err(UsageError(format!("compare --tol: expects a positive number of cm, got '{t}'")).into()),
-        };
-    }
-    let cases = args.switch("cases");
-    opts.strict = args.switch("strict");
-    opts.chaotic_rule = !args.switch("no-chaotic-rule");
-    let verbose = args.switch("verbose");
-    let files = args.finish()?;
-    let (expected, actual) = match files.as_slice() {
-        [e, a] => (Path::new(e), Path::new(a)),
-        _ => return Err(UsageError("compare: expects EXPECTED and ACTUAL (two files, or two case folders with --cases)".into()).into()),
-    };
+/// Printed once when a report mentions chaotic panels.
+const CHAOTIC_NOTE: &str = "note: \"chaotic panels\" are sleeve, cuff and hood panels, whose curves the reference fits with a numerically \
+chaotic optimiser; they are judged by how they sew (shared seam lengths, placement) within wider bounds, not point by point \
+(--no-chaotic-rule compares them point by point)";
+
+pub fn run(args: CompareArgs) -> Result<i32, CliError> {
+    let opts = CompareOptions { tol: args.tol, strict: args.strict, chaotic_rule: !args.no_chaotic_rule, ..CompareOptions::default() };
+    let (expected, actual) = (args.expected.as_path(), args.actual.as_path());
     for p in [expected, actual] {
         if !p.exists() {
             return Err(CliError::Input(format!("{}: no such file or folder", p.display())));
         }
     }
-    let results = if cases {
+    let results = if args.cases {
         compare::compare_case_dirs(expected, actual, &opts).map_err(CliError::Input)?
     } else {
         let name = actual.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         vec![(name, compare::compare_spec_files(expected, actual, &opts))]
     };
+    let mut chaotic = false;
     for (name, v) in &results {
-        outln!("{}", v.report_line(name, if verbose { i64::MAX } else { 3 }));
-        if verbose {
+        let line = v.report_line(name, if args.verbose { i64::MAX } else { 3 });
+        chaotic |= line.contains("chaotic");
+        outln!("{line}");
+        if args.verbose {
             for n in &v.notes {
+                chaotic |= n.contains("chaotic");
                 outln!("  note: {n}");
             }
         }
     }
     for line in compare::summary(&results, &opts) {
+        chaotic |= line.contains("chaotic");
         outln!("{line}");
+    }
+    if chaotic {
+        outln!("{CHAOTIC_NOTE}");
     }
     let passed = results.iter().filter(|(_, v)| v.pass).count();
     Ok(if passed == results.len() && passed > 0 { 0 } else { 1 })

@@ -8,9 +8,9 @@ pub mod sample;
 pub mod schema;
 pub mod serve;
 
-use crate::args::UsageError;
 use crate::output::OutputSet;
 use garmentcode::Pattern;
+use std::path::Path;
 
 /// Why a command failed.
 #[derive(Debug)]
@@ -23,12 +23,6 @@ pub enum CliError {
     Rejected(String),
     /// Work started but did not complete (exit 1).
     Failed(String),
-}
-
-impl From<UsageError> for CliError {
-    fn from(e: UsageError) -> Self {
-        CliError::Usage(e.0)
-    }
 }
 
 /// Read and parse a specification file, naming the file in errors.
@@ -48,42 +42,77 @@ pub fn add_drawings(set: &mut OutputSet, pattern: &Pattern, png: bool, layout: g
     Ok(())
 }
 
-/// The design to build: a built-in name, a design file, or the default t-shirt.
-pub fn load_design(arg: Option<&str>) -> Result<(garments::Design, String), CliError> {
+/// Write an output folder whole (see [`OutputSet::write_folder`]).
+pub fn write_folder(set: &OutputSet, dir: &Path, force: bool) -> Result<(), CliError> {
+    set.write_folder(dir, force).map_err(|e| CliError::Input(format!("cannot write {}: {e}", dir.display())))
+}
+
+/// A built-in name (also written with a `.yaml` extension) unless `arg` is an
+/// existing file.
+fn builtin_name<'a>(arg: &'a str, known: &[&str]) -> Option<&'a str> {
+    if Path::new(arg).is_file() {
+        return None;
+    }
+    let name = arg.strip_suffix(".yaml").unwrap_or(arg);
+    known.contains(&name).then_some(name)
+}
+
+/// ` (did you mean NAME?)` for the closest of `known`, when it is close.
+pub fn did_you_mean(arg: &str, known: &[&str]) -> String {
+    let stem = Path::new(arg).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    let best = known.iter().map(|k| (strsim::levenshtein(&stem, k).min(strsim::levenshtein(arg, k)), *k)).min();
+    match best {
+        Some((d, k)) if d <= 3 && d < k.len() => format!(" (did you mean {k}?)"),
+        _ => String::new(),
+    }
+}
+
+/// The design to build: a built-in name or a design file.
+pub fn load_design(arg: &str) -> Result<(garments::Design, String), CliError> {
     use garmentcode::Params;
-    let name = arg.unwrap_or(garments::builtin::DEFAULT_DESIGN);
-    if let Some(d) = garments::builtin::design(name) {
+    let known: Vec<&str> = garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect();
+    if let Some(name) = builtin_name(arg, &known) {
+        let d = garments::builtin::design(name).expect("a built-in design");
         return Ok((d, name.to_string()));
     }
-    if !std::path::Path::new(name).exists() {
-        let known: Vec<&str> = garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect();
-        return Err(CliError::Input(format!("{name}: no such design file, and not a built-in design (built-in: {})", known.join(", "))));
+    if !Path::new(arg).exists() {
+        return Err(CliError::Input(format!(
+            "{arg}: no such design file, and not a built-in design{} (built-in: {})",
+            did_you_mean(arg, &known),
+            known.join(", ")
+        )));
     }
-    let text = std::fs::read_to_string(name).map_err(|e| CliError::Input(format!("{name}: cannot read: {e}")))?;
-    let d = garmentcode::params::read_design(&text, name, &garments::Design::design_space()).map_err(|e| CliError::Input(e.to_string()))?;
-    let stem = std::path::Path::new(name).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "design".into());
+    let text = std::fs::read_to_string(arg).map_err(|e| CliError::Input(format!("{arg}: cannot read: {e}")))?;
+    let d = garmentcode::io::read_design(&text, arg, &garments::Design::design_space()).map_err(|e| CliError::Input(e.to_string()))?;
+    let stem = Path::new(arg).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "design".into());
     Ok((d, stem))
 }
 
-/// The body: a built-in name, a body file, or the neutral body.
-pub fn load_body(arg: Option<&str>) -> Result<(garmentcode::Body, String), CliError> {
-    let name = arg.unwrap_or(garments::builtin::DEFAULT_BODY);
-    if let Some(b) = garments::builtin::body(name) {
+/// The body: a built-in name or a body file.
+pub fn load_body(arg: &str) -> Result<(garmentcode::Body, String), CliError> {
+    let known: Vec<&str> = garments::builtin::BODIES.iter().map(|(n, _)| *n).collect();
+    if let Some(name) = builtin_name(arg, &known) {
+        let b = garments::builtin::body(name).expect("a built-in body");
         return Ok((b, name.to_string()));
     }
-    if !std::path::Path::new(name).exists() {
-        let known: Vec<&str> = garments::builtin::BODIES.iter().map(|(n, _)| *n).collect();
-        return Err(CliError::Input(format!("{name}: no such body file, and not a built-in body (built-in: {})", known.join(", "))));
+    if !Path::new(arg).exists() {
+        return Err(CliError::Input(format!(
+            "{arg}: no such body file, and not a built-in body{} (built-in: {})",
+            did_you_mean(arg, &known),
+            known.join(", ")
+        )));
     }
-    let text = std::fs::read_to_string(name).map_err(|e| CliError::Input(format!("{name}: cannot read: {e}")))?;
-    let b = garmentcode::Body::from_yaml(&text, name).map_err(|e| CliError::Input(e.to_string()))?;
-    Ok((b, name.to_string()))
+    let text = std::fs::read_to_string(arg).map_err(|e| CliError::Input(format!("{arg}: cannot read: {e}")))?;
+    let b = garmentcode::Body::from_yaml(&text, arg).map_err(|e| CliError::Input(e.to_string()))?;
+    Ok((b, arg.to_string()))
 }
 
-/// `--layout placed|flat` (default placed, the reference's drawing).
-pub fn layout_arg(args: &mut crate::args::Args, command: &str) -> Result<garmentcode::draw::Layout, CliError> {
-    match args.value("layout")? {
-        None => Ok(garmentcode::draw::Layout::Placed),
-        Some(v) => v.parse().map_err(|e| CliError::Usage(format!("{command} --layout: {e}"))),
-    }
+/// `garmentcode completions SHELL`.
+pub fn completions(args: crate::cli::CompletionsArgs) -> Result<i32, CliError> {
+    use clap::CommandFactory;
+    let mut cmd = crate::cli::Cli::command();
+    let mut script = Vec::new();
+    clap_complete::generate(args.shell, &mut cmd, "garmentcode", &mut script);
+    out!("{}", String::from_utf8_lossy(&script));
+    Ok(0)
 }

@@ -1,25 +1,31 @@
-//! `garmentcode render SPEC.json --out DIR [--no-png] [--layout placed|flat]`: re-emit
-//! the pattern and draw it.
+//! `garmentcode render SPEC.json --out DIR [--no-png] [--layout placed|flat] [--force]`:
+//! re-emit the pattern and draw it.
 
-use crate::args::{Args, UsageError};
-use crate::commands::{CliError, read_pattern};
+use crate::cli::RenderArgs;
+use crate::commands::{CliError, read_pattern, write_folder};
 use crate::output::OutputSet;
-use std::path::PathBuf;
+use garmentcode::{Severity, validate};
 
-pub fn run(mut args: Args) -> Result<i32, CliError> {
-    let out = args.value("out")?.ok_or_else(|| UsageError("render: --out DIR is required".into()))?;
-    let no_png = args.switch("no-png");
-    let layout = crate::commands::layout_arg(&mut args, "render")?;
-    let files = args.finish()?;
-    let [file] = files.as_slice() else {
-        return Err(UsageError("render: expects exactly one SPEC.json file".into()).into());
-    };
+pub fn run(args: RenderArgs) -> Result<i32, CliError> {
+    let file = &args.file;
     let pattern = read_pattern(file)?;
+    let errors: Vec<String> = validate(&pattern).iter().filter(|p| p.severity == Severity::Error).map(|p| p.to_string()).collect();
+    if !errors.is_empty() {
+        if !args.force {
+            let shown: Vec<&str> = errors.iter().take(5).map(String::as_str).collect();
+            return Err(CliError::Rejected(format!(
+                "{file}: {} structural error(s), nothing drawn (`garmentcode check` lists them; --force draws anyway):\n  {}",
+                errors.len(),
+                shown.join("\n  ")
+            )));
+        }
+        eprintln!("warning: {file}: drawing a pattern with {} structural error(s) (--force)", errors.len());
+    }
     let mut set = OutputSet::default();
     set.add("specification.json", pattern.to_json().map_err(|e| CliError::Input(format!("{file}: {e}")))?);
-    crate::commands::add_drawings(&mut set, &pattern, !no_png, layout).map_err(|e| CliError::Input(format!("{file}: {e}")))?;
-    let dir = PathBuf::from(&out);
-    set.write(&dir).map_err(|e| CliError::Input(format!("cannot write {}: {e}", dir.display())))?;
-    eprintln!("wrote {}", dir.display());
+    crate::commands::add_drawings(&mut set, &pattern, !args.no_png, args.layout.into())
+        .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
+    write_folder(&set, &args.out, args.force)?;
+    eprintln!("wrote {}", args.out.display());
     Ok(0)
 }

@@ -1,21 +1,22 @@
 //! `garmentcode schema [--format reference-yaml|json-schema|table]`
 
-use crate::args::{Args, UsageError};
+use crate::cli::{SchemaArgs, SchemaFormat};
 use crate::commands::CliError;
 use garmentcode::Params;
+use garmentcode::io::write_design;
 use garments::Design;
 
-pub fn run(mut args: Args) -> Result<i32, CliError> {
-    let format = args.value("format")?.unwrap_or_else(|| "reference-yaml".into());
-    let rest = args.finish()?;
-    if !rest.is_empty() {
-        return Err(UsageError(format!("schema: unexpected argument '{}'", rest[0])).into());
-    }
+pub fn run(args: SchemaArgs) -> Result<i32, CliError> {
     let space = Design::design_space();
-    match format.as_str() {
-        "reference-yaml" => out!("{}", space.to_yaml()),
-        "json-schema" => outln!("{}", serde_json::to_string_pretty(&space.json_schema()).expect("schema serialises")),
-        "table" => {
+    match args.format {
+        // The built-in default design in the reference's layout (every parameter
+        // with its range and probability): a design file that builds.
+        SchemaFormat::ReferenceYaml => {
+            let default = garments::builtin::design(garments::builtin::DEFAULT_DESIGN).expect("the default design is built in");
+            out!("{}", write_design(&default, &space))
+        }
+        SchemaFormat::JsonSchema => outln!("{}", serde_json::to_string_pretty(&space.json_schema()).expect("schema serialises")),
+        SchemaFormat::Table => {
             for p in space.params() {
                 let prob = p.default_prob.map(|x| x.to_string()).unwrap_or_else(|| "-".into());
                 outln!(
@@ -29,7 +30,6 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
                 );
             }
         }
-        other => return Err(UsageError(format!("schema --format: expected reference-yaml, json-schema or table, got '{other}'")).into()),
     }
     Ok(0)
 }

@@ -19,8 +19,8 @@
 use std::cell::RefCell;
 use std::sync::OnceLock;
 
-use garmentcode::params::{DesignError, Kind, ParamSpec, Range, Value as PValue, from_values, read_design_values, write_design};
-use garmentcode::{Arena, Body, DesignSpace, Params};
+use garmentcode::io::{DesignError, from_values, read_design_values, write_design};
+use garmentcode::{Arena, Body, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue};
 use garments::Design;
 use garments::sample::{DatasetSampler, NamedBody, Outcome};
 use serde_json::{Map, Value as Json, json};
@@ -30,6 +30,8 @@ use super::zip;
 
 /// Longest accepted pattern name.
 const MAX_NAME: usize = 64;
+/// Problems an error lists; the rest are counted in a last line.
+const MAX_PROBLEMS: usize = 20;
 
 /// A request the API refuses: the HTTP status, a message, and for designs and
 /// bodies with several problems one line per problem.
@@ -44,17 +46,24 @@ pub struct ApiError {
 }
 
 impl ApiError {
-    fn new(status: u16, message: impl Into<String>) -> ApiError {
+    /// An error with this status and message.
+    pub fn new(status: u16, message: impl Into<String>) -> ApiError {
         let message = message.into();
         ApiError { status, problems: vec![message.clone()], message }
     }
 
-    fn bad(message: impl Into<String>) -> ApiError {
+    /// A 400 Bad Request with this message.
+    pub fn bad(message: impl Into<String>) -> ApiError {
         ApiError::new(400, message)
     }
 
-    fn from_problems(problems: Vec<String>) -> ApiError {
-        let message = match problems.len() {
+    fn from_problems(mut problems: Vec<String>) -> ApiError {
+        let n = problems.len();
+        if n > MAX_PROBLEMS {
+            problems.truncate(MAX_PROBLEMS);
+            problems.push(format!("... and {} more", n - MAX_PROBLEMS));
+        }
+        let message = match n {
             1 => problems[0].clone(),
             n => format!("{n} problems: {}", problems.join("; ")),
         };
@@ -169,11 +178,14 @@ fn route_inner(req: &Request) -> Response {
 
 /// The request body as a JSON object (an empty body is `{}`).
 fn parse_json(req: &Request) -> ApiResult<Json> {
-    if let Some(ct) = req.header("content-type") {
-        let mime = ct.split(';').next().unwrap_or("").trim().to_ascii_lowercase();
-        if mime != "application/json" && mime != "text/plain" {
-            return Err(ApiError::new(415, format!("the body must be JSON (Content-Type: application/json), not {mime}")));
-        }
+    // Only `application/json`: a web page can send `text/plain` or a form to any
+    // address without asking, but not JSON.
+    let mime = req.header("content-type").map(|ct| ct.split(';').next().unwrap_or("").trim().to_ascii_lowercase());
+    if mime.as_deref() != Some("application/json") {
+        return Err(ApiError::new(
+            415,
+            format!("the body must be JSON sent with Content-Type: application/json (got {})", mime.as_deref().unwrap_or("none")),
+        ));
     }
     if req.body.iter().all(u8::is_ascii_whitespace) {
         return Ok(Json::Object(Map::new()));
@@ -308,6 +320,11 @@ fn typed_design(values: &[(String, PValue)]) -> ApiResult<Design> {
     from_values(values, "design").map_err(design_error)
 }
 
+/// Warnings in words (see [`crate::explain_warning`]).
+fn explained(warnings: Vec<String>) -> Vec<String> {
+    warnings.iter().map(|w| crate::explain_warning(w)).collect()
+}
+
 /// The body of a request: absent for the neutral body, a built-in name, or an
 /// object with a body file's text (`yaml`) or measurements over a built-in body
 /// (`base`, default the neutral body; `measurements`: name → number, derived
@@ -365,6 +382,11 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
                 }
                 Some(other) => problems
                     .push(format!("body.measurements must be an object of measurement names and numbers, not a JSON {}", json_type(other))),
+            }
+            if problems.is_empty() {
+                if let Err(p) = b.check_derived() {
+                    problems.extend(p.into_iter().map(|p| format!("body: {p}")));
+                }
             }
             if problems.is_empty() {
                 let label = if map.contains_key("measurements") { label } else { base.to_string() };
@@ -465,26 +487,20 @@ pub fn schema() -> Json {
             json!({ "name": n, "description": description })
         })
         .collect();
-    let measurements: Vec<Json> = Body::measurement_names()
-        .map(|n| {
+    let measurements: Vec<Json> = garmentcode::MEASUREMENTS
+        .iter()
+        .map(|m| {
             json!({
-                "name": n,
-                "unit": if Body::is_angle(n) { "deg" } else { "cm" },
-                "optional": n == "vert_bust_line",
-                "description": Body::describe_measurement(n).unwrap_or(""),
+                "name": m.name,
+                "unit": m.unit,
+                "optional": m.optional,
+                "description": m.description,
+                "min": m.min,
+                "max": m.max,
             })
         })
         .collect();
-    let neutral = builtin_bodies().first().map(|(_, b)| b.clone());
-    let derived: Vec<Json> = neutral
-        .map(|b| {
-            b.entries()
-                .into_iter()
-                .filter(|(n, _)| n.starts_with('_'))
-                .map(|(n, _)| json!({ "name": n, "description": Body::describe_measurement(n).unwrap_or("") }))
-                .collect()
-        })
-        .unwrap_or_default();
+    let derived: Vec<Json> = garmentcode::DERIVED_VALUES.iter().map(|d| json!({ "name": d.name, "description": d.description })).collect();
     json!({
         "groups": groups,
         "params": params,
@@ -602,7 +618,7 @@ pub fn pattern_text(input: &Json) -> ApiResult<String> {
                 "name": ev.name,
                 "panels": out.panels,
                 "stitches": out.stitches,
-                "warnings": out.checks.warnings(),
+                "warnings": explained(out.checks.warnings()),
                 "checks": checks_json(&out.checks),
                 "svg": out.svg,
                 "body": body,
@@ -641,7 +657,7 @@ pub fn random(input: &Json) -> ApiResult<Json> {
     Ok(match outcome {
         Outcome::Accepted(sample) => {
             let values = design_to_values(&sample.design);
-            json!({ "ok": true, "seed": seed, "draw": sample.attempt, "design": values_json(&values), "warnings": sample.built.checks.warnings() })
+            json!({ "ok": true, "seed": seed, "draw": sample.attempt, "design": values_json(&values), "warnings": explained(sample.built.checks.warnings()) })
         }
         Outcome::Exhausted { rejections, .. } => json!({
             "ok": false,

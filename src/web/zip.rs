@@ -108,7 +108,7 @@ fn put32(out: &mut Vec<u8>, v: u32) {
     out.extend_from_slice(&v.to_le_bytes());
 }
 
-/// Read back a stored archive written by [`write`]: `(name, contents)` per entry,
+/// Read back a stored archive written by [`write`](fn@write): `(name, contents)` per entry,
 /// with every CRC checked. For tests and tools; not a general zip reader.
 pub fn read_stored(zip: &[u8]) -> Result<Vec<(String, Vec<u8>)>, ZipError> {
     let bad = |m: &str| ZipError(format!("not a stored zip archive: {m}"));

@@ -15,6 +15,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
             let never = super::placeholder_body();
             return quote! {
                 #err
+                #[automatically_derived]
                 impl #p::Choice for #ident {
                     const NAMES: &'static [&'static str] = &[];
                     fn name(&self) -> &'static str { #never }
@@ -26,6 +27,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     let names: Vec<&String> = model.variants.iter().map(|(_, n)| n).collect();
     let idents: Vec<&syn::Ident> = model.variants.iter().map(|(i, _)| i).collect();
     quote! {
+        #[automatically_derived]
         impl #p::Choice for #ident {
             const NAMES: &'static [&'static str] = &[#(#names),*];
             fn name(&self) -> &'static str {

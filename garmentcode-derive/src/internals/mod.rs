@@ -18,6 +18,11 @@ impl Errors {
         self.errors.push(syn::Error::new(span, msg));
     }
 
+    /// Record an error over all of `tokens` (an expression, a type).
+    pub fn spanned(&mut self, tokens: impl quote::ToTokens, msg: impl std::fmt::Display) {
+        self.errors.push(syn::Error::new_spanned(tokens, msg));
+    }
+
     /// Record a parse error.
     pub fn push(&mut self, e: syn::Error) {
         self.errors.push(e);

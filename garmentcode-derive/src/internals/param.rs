@@ -56,6 +56,34 @@ pub struct Group {
     pub ty: Type,
     /// Name in design files.
     pub name: String,
+    /// Per-instance overrides of the group's parameters.
+    pub overrides: Vec<Override>,
+}
+
+/// `#[param(field(default = .., range = .., prob = .., doc = "..", skip))]` on a nested
+/// group field: changes one parameter of this instance of the group.
+pub struct Override {
+    /// Field path inside the group (`cuff.top_ruffle` is `[cuff, top_ruffle]`).
+    pub path: Vec<Ident>,
+    /// Span of the last field name.
+    pub span: Span,
+    /// `default = ..`: a new default (a number, `true`/`false` or an expression of the field's type).
+    pub default: Option<Expr>,
+    /// `range = lo..=hi`: a new range (numeric parameters).
+    pub range: Option<(f64, f64)>,
+    /// `prob = p` or `prob = None`: a new sampling probability.
+    pub prob: Option<Option<f64>>,
+    /// `doc = ".."`: a new description.
+    pub doc: Option<LitStr>,
+    /// `skip`: leave the parameter (or sub-group) out of this instance's schema.
+    pub skip: bool,
+}
+
+impl Override {
+    /// The field path as written, `a.b`.
+    pub fn dotted(&self) -> String {
+        self.path.iter().map(|i| i.unraw().to_string()).collect::<Vec<_>>().join(".")
+    }
 }
 
 /// A field of a parameter struct.
@@ -81,7 +109,77 @@ struct RawAttr {
     prob: Option<(Expr, Span)>,
     rename: Option<LitStr>,
     null_option: Option<(bool, Span)>,
+    overrides: Vec<Override>,
     seen: bool,
+}
+
+/// Parse `field(...)` of an override list: settings of `path` and nested
+/// `sub(...)` overrides below it.
+fn parse_override(meta: &syn::meta::ParseNestedMeta, path: Vec<Ident>, out: &mut Vec<Override>, errors: &mut Errors) -> syn::Result<()> {
+    let span = meta.path.span();
+    let mut o = Override { path: path.clone(), span, default: None, range: None, prob: None, doc: None, skip: false };
+    let fork = meta.input.fork();
+    let content;
+    syn::parenthesized!(content in fork);
+    if content.is_empty() {
+        return Err(syn::Error::new(span, "empty override: give `default`, `range`, `prob`, `doc`, `skip` or a nested `field(..)`"));
+    }
+    meta.parse_nested_meta(|inner| {
+        let Some(key) = inner.path.get_ident().cloned() else {
+            return Err(inner.error("expected a field name or an override key"));
+        };
+        if inner.input.peek(syn::token::Paren) {
+            let mut sub = path.clone();
+            sub.push(key);
+            return parse_override(&inner, sub, out, errors);
+        }
+        match key.to_string().as_str() {
+            "default" => o.default = Some(inner.value()?.parse()?),
+            "range" => {
+                let e: Expr = inner.value()?.parse()?;
+                o.range = parse_range(&e, errors);
+            }
+            "prob" => {
+                let e: Expr = inner.value()?.parse()?;
+                o.prob = match &e {
+                    Expr::Path(p) if p.path.is_ident("None") => Some(None),
+                    _ => match number(&e) {
+                        Some((p, _)) if (0.0..=1.0).contains(&p) => Some(Some(p)),
+                        Some((p, _)) => {
+                            errors.spanned(&e, format!("probability {p} is outside [0, 1]"));
+                            None
+                        }
+                        None => {
+                            errors.spanned(&e, "prob must be a number in [0, 1] or `None`");
+                            None
+                        }
+                    },
+                };
+            }
+            "doc" => o.doc = Some(inner.value()?.parse()?),
+            "skip" => o.skip = true,
+            other => {
+                return Err(
+                    inner.error(format!("unknown override `{other}` (expected default, range, prob, doc, skip or a nested `field(..)`)"))
+                );
+            }
+        }
+        Ok(())
+    })?;
+    let set = o.default.is_some() || o.range.is_some() || o.prob.is_some() || o.doc.is_some();
+    if o.skip && set {
+        errors.at(span, "a skipped parameter takes no other override");
+    }
+    if let (Some(d), Some((lo, hi))) = (&o.default, o.range)
+        && let Some((v, _)) = number(d)
+        && (v < lo || v > hi)
+    {
+        errors.spanned(d, format!("default {v} is outside the range {lo}..={hi}"));
+    }
+    if o.skip || set {
+        out.push(o);
+    }
+    Ok(())
 }
 
 fn parse_param_attr(attrs: &[syn::Attribute], errors: &mut Errors) -> RawAttr {
@@ -107,9 +205,14 @@ fn parse_param_attr(attrs: &[syn::Attribute], errors: &mut Errors) -> RawAttr {
                         other => return Err(syn::Error::new(other.span(), "options must be a list: `options = [a, b, c]`")),
                     }
                 }
+                _ if meta.input.peek(syn::token::Paren) && meta.path.get_ident().is_some() => {
+                    let field = meta.path.get_ident().cloned().expect("checked");
+                    parse_override(&meta, vec![field], &mut raw.overrides, errors)?;
+                }
                 _ => {
                     return Err(meta.error(format!(
-                        "unknown parameter attribute `{key}` (expected range, options, default, prob, rename or null_option)"
+                        "unknown parameter attribute `{key}` (expected range, options, default, prob, rename, null_option, \
+                         or `field(..)` overrides on a nested group)"
                     )));
                 }
             }
@@ -187,13 +290,24 @@ pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
 
         let is_leaf = raw.default.is_some() || raw.range.is_some() || raw.options.is_some() || raw.prob.is_some();
         if !is_leaf {
-            fields.push(Field::Group(Group { ident, ty: f.ty.clone(), name }));
+            let mut seen: Vec<String> = Vec::new();
+            for o in &raw.overrides {
+                let d = o.dotted();
+                if seen.contains(&d) {
+                    errors.at(o.span, format!("`{d}` is overridden twice"));
+                }
+                seen.push(d);
+            }
+            fields.push(Field::Group(Group { ident, ty: f.ty.clone(), name, overrides: raw.overrides }));
             continue;
+        }
+        if let Some(o) = raw.overrides.first() {
+            errors.at(o.path[0].span(), "`field(..)` overrides apply to nested groups, not to a parameter");
         }
         let leaf_type = match classify(&f.ty) {
             Ok(t) => t,
             Err(msg) => {
-                errors.at(f.ty.span(), msg);
+                errors.spanned(&f.ty, msg);
                 continue;
             }
         };
@@ -201,14 +315,14 @@ pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
             errors.at(ident.span(), "a parameter needs a `default = ..`");
             continue;
         };
-        let range = raw.range.as_ref().and_then(|(e, span)| parse_range(e, *span, &mut errors));
+        let range = raw.range.as_ref().and_then(|(e, _)| parse_range(e, &mut errors));
         let options = raw.options.as_ref().map(|(items, _)| {
             items
                 .iter()
                 .filter_map(|it| match number(it) {
                     Some((v, _)) => Some(v),
                     None => {
-                        errors.at(it.span(), "options must be numbers (use an enum deriving Choice for named options)");
+                        errors.spanned(it, "options must be numbers (use an enum deriving Choice for named options)");
                         None
                     }
                 })
@@ -217,11 +331,12 @@ pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
         let prob = raw.prob.as_ref().and_then(|(e, span)| match number(e) {
             Some((p, _)) if (0.0..=1.0).contains(&p) => Some(p),
             Some((p, _)) => {
-                errors.at(e.span(), format!("probability {p} is outside [0, 1]"));
+                errors.spanned(e, format!("probability {p} is outside [0, 1]"));
                 None
             }
             None => {
-                errors.at(*span, "prob must be a number in [0, 1]");
+                let _ = span;
+                errors.spanned(e, "prob must be a number in [0, 1]");
                 None
             }
         });
@@ -240,27 +355,32 @@ pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
                     errors.at(ident.span(), "give either `range` or `options`, not both");
                 }
                 match number(&default) {
-                    None => errors.at(default.span(), "the default of a numeric parameter must be a number"),
+                    None => errors.spanned(&default, "the default of a numeric parameter must be a number"),
                     Some((d, is_int)) => {
                         if leaf_type == LeafType::Int && !is_int {
-                            errors.at(default.span(), "the default of an i64 parameter must be an integer");
+                            errors.spanned(&default, "the default of an i64 parameter must be an integer");
                         }
                         if let Some((lo, hi)) = range
                             && (d < lo || d > hi)
                         {
-                            errors.at(default.span(), format!("default {d} is outside the range {lo}..={hi}"));
+                            errors.spanned(&default, format!("default {d} is outside the range {lo}..={hi}"));
                         }
                         if let Some(opts) = &options
+                            && !opts.is_empty()
                             && !opts.contains(&d)
                         {
                             let list: Vec<String> = opts.iter().map(|o| o.to_string()).collect();
-                            errors.at(default.span(), format!("default {d} is not one of the options [{}]", list.join(", ")));
+                            errors.spanned(&default, format!("default {d} is not one of the options [{}]", list.join(", ")));
                         }
                     }
                 }
                 if let Some(opts) = &options {
-                    if leaf_type == LeafType::Int && opts.iter().any(|o| o.fract() != 0.0) {
-                        errors.at(raw.options.as_ref().expect("options").1, "options of an i64 parameter must be integers");
+                    if leaf_type == LeafType::Int {
+                        for item in &raw.options.as_ref().expect("options").0 {
+                            if number(item).is_some_and(|(_, is_int)| !is_int) {
+                                errors.spanned(item, "options of an i64 parameter must be integers");
+                            }
+                        }
                     }
                     if opts.is_empty() {
                         errors.at(raw.options.as_ref().expect("options").1, "options must not be empty");
@@ -275,7 +395,7 @@ pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
                     errors.at(*span, "`options` applies to f64 and i64 parameters; the options of an enum are its variants");
                 }
                 if leaf_type == LeafType::Bool && !matches!(&default, Expr::Lit(syn::ExprLit { lit: syn::Lit::Bool(_), .. })) {
-                    errors.at(default.span(), "the default of a bool parameter must be `true` or `false`");
+                    errors.spanned(&default, "the default of a bool parameter must be `true` or `false`");
                 }
             }
         }
@@ -297,25 +417,29 @@ pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
     Ok(ParamStruct { fields })
 }
 
-fn parse_range(e: &Expr, span: Span, errors: &mut Errors) -> Option<(f64, f64)> {
+fn parse_range(e: &Expr, errors: &mut Errors) -> Option<(f64, f64)> {
     let Expr::Range(r) = e else {
-        errors.at(span, "range must be written `lo..=hi`");
+        errors.spanned(e, "range must be written `lo..=hi`");
         return None;
     };
     if !matches!(r.limits, RangeLimits::Closed(_)) {
-        errors.at(e.span(), "range must include its upper bound: write `lo..=hi`");
+        errors.spanned(e, "range must include its upper bound: write `lo..=hi`");
         return None;
     }
     let (Some(start), Some(end)) = (&r.start, &r.end) else {
-        errors.at(e.span(), "range needs both bounds: `lo..=hi`");
+        errors.spanned(e, "range needs both bounds: `lo..=hi`");
         return None;
     };
+    for bound in [start, end] {
+        if number(bound).is_none() {
+            errors.spanned(bound, "range bounds must be number literals");
+        }
+    }
     let (Some((lo, _)), Some((hi, _))) = (number(start), number(end)) else {
-        errors.at(e.span(), "range bounds must be number literals");
         return None;
     };
     if lo >= hi {
-        errors.at(e.span(), format!("empty or reversed range {lo}..={hi}"));
+        errors.spanned(e, format!("empty or reversed range {lo}..={hi}"));
         return None;
     }
     Some((lo, hi))
@@ -342,7 +466,7 @@ pub fn parse_enum(input: &DeriveInput) -> Result<ChoiceEnum, syn::Error> {
             errors.at(v.ident.span(), "choice variants cannot carry data");
         }
         let raw = parse_param_attr(&v.attrs, &mut errors);
-        if raw.range.is_some() || raw.options.is_some() || raw.default.is_some() || raw.prob.is_some() {
+        if raw.range.is_some() || raw.options.is_some() || raw.default.is_some() || raw.prob.is_some() || !raw.overrides.is_empty() {
             errors.at(v.ident.span(), "only `rename` applies to choice variants");
         }
         let (name, span) = match &raw.rename {

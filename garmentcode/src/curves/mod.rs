@@ -2,9 +2,9 @@
 //! `curve_from_tangents`), a quadratic through a prescribed extremum, and the cubic
 //! re-fit to end tangents at a fixed length that inverts sleeve openings.
 
-pub mod bfgs;
 pub mod inversion;
 
+pub use crate::arc::{cy_from_angle, cy_from_radius, cy_from_three_points, is_large, midpoint, rel_radius, svg_arc, sweep_angle};
 use crate::bezier::Bezier;
 use crate::edge::{Curve, Edge};
 use crate::math::{Vec2, abs_to_rel_vector, norm};
@@ -28,7 +28,7 @@ pub fn quadratic_from_tangents(start: Vec2, end: Vec2, tan0: Option<Vec2>, tan1:
     let [t0x, t0y] = t0.unwrap_or_default().map(f64::to_bits);
     let [t1x, t1y] = t1.unwrap_or_default().map(f64::to_bits);
     let key = [given, t0x, t0y, t1x, t1y, initial.x.to_bits(), initial.y.to_bits()];
-    let cp = crate::memo::tangent_fit(key, || bfgs::fit_quadratic_tangents(t0, t1, [initial.x, initial.y]));
+    let cp = crate::memo::tangent_fit(key, || crate::parity::bfgs::fit_quadratic_tangents(t0, t1, [initial.x, initial.y]));
     Curve::Quadratic(Vec2::new(cp[0], cp[1]))
 }
 

@@ -7,7 +7,7 @@
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
-use super::{DrawOptions, FLAT_ROW_WIDTH, Layout};
+use super::options::{DrawOptions, FLAT_ROW_WIDTH, Layout};
 use crate::arc::SvgArc;
 use crate::bezier::Bezier;
 use crate::error::{Error, Result};
@@ -404,7 +404,7 @@ const FLAT_GAP: f64 = 4.0;
 /// Rearrange placed panels into rows without overlap (shelf packing in the
 /// pattern's panel order, or by name for panels the order does not list).
 fn arrange_flat(p: &Pattern, panels: &mut [PlacedPanel]) {
-    let order = p.panel_order.clone().unwrap_or_else(|| crate::pattern::panel_order(p));
+    let order = p.panel_order.clone().unwrap_or_else(|| crate::pattern::order::panel_order(p));
     let rank = |name: &str| order.iter().position(|n| n == name).unwrap_or(usize::MAX);
     panels.sort_by(|a, b| rank(&a.name).cmp(&rank(&b.name)).then_with(|| a.name.cmp(&b.name)));
     let widest = panels.iter().map(|q| q.bbox.max.x - q.bbox.min.x).fold(0.0, f64::max);

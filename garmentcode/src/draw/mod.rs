@@ -16,80 +16,24 @@
 //! Both outputs are built from one layout of the sheet, so the PNG shows exactly
 //! what the SVG describes, and both are deterministic: the same pattern and options
 //! give the same bytes. Text in the PNG uses a small built-in stroke font, so no
-//! system fonts are needed.
+//! system fonts are needed. The PNG output (and its dependencies, `tiny-skia` and
+//! `png`) is behind the `png` cargo feature, on by default.
 
+#[cfg(feature = "png")]
 mod font;
 mod layout;
+mod options;
+#[cfg(feature = "png")]
 mod raster;
 mod svg;
 
-#[cfg(test)]
+#[cfg(all(test, feature = "png"))]
 mod tests;
+
+pub use options::{DrawOptions, FLAT_ROW_WIDTH, Layout};
 
 use crate::error::Result;
 use crate::pattern::Pattern;
-
-/// How panels are arranged on the sheet.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Layout {
-    /// As the reference draws them: each panel at its flattened 3D position, front
-    /// panels on the left and back panels on the right (panels may overlap, as on
-    /// the body).
-    #[default]
-    Placed,
-    /// Side by side without overlap, in rows at most [`FLAT_ROW_WIDTH`] cm wide
-    /// (or as wide as the widest panel), in the pattern's panel order: a sheet to
-    /// print and cut from. Panels keep their orientation.
-    Flat,
-}
-
-/// Row width of [`Layout::Flat`], in cm (a 150 cm bolt of fabric).
-pub const FLAT_ROW_WIDTH: f64 = 150.0;
-
-impl std::str::FromStr for Layout {
-    type Err = String;
-    fn from_str(s: &str) -> std::result::Result<Layout, String> {
-        match s {
-            "placed" => Ok(Layout::Placed),
-            "flat" => Ok(Layout::Flat),
-            other => Err(format!("unknown layout '{other}' (expected placed or flat)")),
-        }
-    }
-}
-
-/// What to draw and at which resolution.
-#[derive(Clone, Debug, PartialEq)]
-pub struct DrawOptions {
-    /// Arrangement of the panels.
-    pub layout: Layout,
-    /// Panel names at the centre of each panel (the reference's `with_text`).
-    pub with_text: bool,
-    /// Vertex indices at vertices and edge indices at edge midpoints (the
-    /// reference's `view_ids`).
-    pub view_ids: bool,
-    /// Numbered, coloured markers on both edges of every stitch.
-    pub stitch_markers: bool,
-    /// Free space around the panels, in cm (the reference uses 2).
-    pub margin: f64,
-    /// PNG resolution in pixels per cm (the reference rasterises at 3).
-    pub px_per_cm: f64,
-    /// PNG background; `None` keeps it transparent, as the reference's PNG.
-    pub background: Option<[u8; 3]>,
-}
-
-impl Default for DrawOptions {
-    fn default() -> Self {
-        DrawOptions {
-            layout: Layout::Placed,
-            with_text: true,
-            view_ids: false,
-            stitch_markers: true,
-            margin: 2.0,
-            px_per_cm: 3.0,
-            background: None,
-        }
-    }
-}
 
 /// The placed drawing of `p` as an SVG document (sizes in cm, y down).
 ///
@@ -108,6 +52,9 @@ pub fn to_svg(p: &Pattern, opts: &DrawOptions) -> Result<String> {
 /// The image is `ceil(view box size × px_per_cm)` pixels wide and high (the
 /// reference's rasteriser rounds instead, so its PNG can be one pixel smaller), RGBA,
 /// transparent outside the panels unless `opts.background` is set.
+///
+/// Needs the `png` feature (on by default).
+#[cfg(feature = "png")]
 pub fn to_png(p: &Pattern, opts: &DrawOptions) -> Result<Vec<u8>> {
     let sheet = layout::layout(p, opts)?;
     raster::render(&sheet, opts)

@@ -6,12 +6,12 @@
 
 use tiny_skia::{Color, FillRule, LineCap, LineJoin, Paint, Path, PathBuilder, Pixmap, Stroke, Transform};
 
-use super::DrawOptions;
 use super::font;
 use super::layout::{
     Anchor, MARKER_RADIUS, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH, PlacedPanel, Rgb, Segment,
     Shape, Sheet, Text, TextKind,
 };
+use super::options::DrawOptions;
 use crate::error::{Error, Result};
 use crate::math::Vec2;
 

@@ -5,8 +5,8 @@
 //! (the pattern drawer flips it, the mesher does not). Circular arcs follow the SVG
 //! endpoint-to-centre conversion with the sweep flag equal to the edge's `right`.
 
-use crate::math::Vec2;
-use crate::pattern::{Curvature, PanelSpec};
+use crate::Vec2;
+use crate::{Curvature, PanelSpec};
 
 /// One edge's curve in the panel's 2D frame.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -51,8 +51,8 @@ pub use curve::MeshCurve;
 pub use triangulate::SIZE_BOUND;
 pub use write::{read_obj, read_segmentation};
 
-use crate::math::{Vec2, Vec3};
-use crate::pattern::{PanelSpec, Pattern, panel_order};
+use crate::{Vec2, Vec3};
+use crate::{PanelSpec, Pattern, panel_order};
 
 /// The reference simulator's default resolution (`sim.config.resolution_scale`), cm.
 pub const DEFAULT_RESOLUTION: f64 = 1.0;
@@ -650,7 +650,7 @@ fn to_cm(pattern: &Pattern) -> Pattern {
         }
         panel.translation = panel.translation.map(|t| t * s);
         for e in &mut panel.edges {
-            if let Some(crate::pattern::Curvature::Circle { radius, .. }) = &mut e.curvature {
+            if let Some(crate::Curvature::Circle { radius, .. }) = &mut e.curvature {
                 *radius *= s;
             }
         }

@@ -13,7 +13,7 @@ use std::collections::{HashMap, VecDeque};
 use spade::handles::{FixedFaceHandle, InnerTag};
 use spade::{AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation};
 
-use crate::math::Vec2;
+use crate::Vec2;
 
 type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
 type VertexHandle<'a> = spade::handles::VertexHandle<'a, Point2<f64>, (), spade::CdtEdge<()>, ()>;

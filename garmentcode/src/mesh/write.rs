@@ -6,8 +6,8 @@ use std::io;
 use std::path::{Path, PathBuf};
 
 use super::{BoxMesh, VertexLabel};
-use crate::math::{Vec2, Vec3};
-use crate::pattern::write_python_float;
+use crate::{Vec2, Vec3};
+use crate::parity::float_repr::write_python_float;
 
 /// Padding between texture islands (cm), as the reference lays them out.
 const UV_PADDING: f64 = 3.0;

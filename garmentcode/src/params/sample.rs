@@ -9,7 +9,9 @@
 //! sample `index` of seed `seed` is the same on every machine and can be
 //! regenerated alone.
 
-use super::{DesignSpace, Kind, Params, Range, Value};
+use super::Params;
+use super::space::DesignSpace;
+use super::spec::{Kind, ParamSpec, Range, Value};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::{RngCore, SeedableRng};
 
@@ -67,7 +69,7 @@ impl Sampler {
 }
 
 /// The options a fresh draw of `p` picks from (see [`Sampler::choices`]).
-fn fresh_choices(p: &super::ParamSpec) -> Vec<Value> {
+fn fresh_choices(p: &ParamSpec) -> Vec<Value> {
     let Range::Options(opts) = &p.range else { return Vec::new() };
     let mut opts = opts.clone();
     if p.kind == Kind::SelectNull && !opts.contains(&Value::Null) {
@@ -82,12 +84,12 @@ fn fresh_choices(p: &super::ParamSpec) -> Vec<Value> {
 }
 
 #[cfg(test)]
-fn sample_one(p: &super::ParamSpec, rng: &mut impl RngCore) -> Value {
+fn sample_one(p: &ParamSpec, rng: &mut impl RngCore) -> Value {
     draw(p, &fresh_choices(p), rng)
 }
 
 /// One draw of `p`; `choices` are its [`fresh_choices`].
-fn draw(p: &super::ParamSpec, choices: &[Value], rng: &mut impl RngCore) -> Value {
+fn draw(p: &ParamSpec, choices: &[Value], rng: &mut impl RngCore) -> Value {
     let keep = p.default_prob.is_some_and(|prob| unit(rng) < prob);
     if keep {
         return p.default.clone();
@@ -142,7 +144,6 @@ pub fn below(rng: &mut impl RngCore, n: u64) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::params::ParamSpec;
 
     fn spec(kind: Kind, range: Range, default: Value, prob: Option<f64>) -> ParamSpec {
         ParamSpec { path: "x".into(), kind, range, default, default_prob: prob, description: String::new() }

@@ -6,20 +6,12 @@
 //! ([`Pattern::from_json`]) and writes the same layout ([`Pattern::to_json`]),
 //! deterministically.
 
-mod json;
-mod order;
-mod validate;
-
-pub use json::python_float_repr;
-pub(crate) use json::write_python_float;
-pub use order::panel_order;
-pub use validate::{Problem, ProblemKind, Severity, validate};
-
+pub(crate) mod order;
+pub(crate) mod validate;
 use crate::arc;
 use crate::edge::{Curve, Edge};
 use crate::math::Vec2;
 use crate::rotation::Rotation;
-use crate::stitch::StitchRecord;
 
 /// A whole sewing pattern.
 #[derive(Clone, Debug, PartialEq)]
@@ -145,20 +137,6 @@ impl Pattern {
         }
     }
 
-    /// Pattern from assembled panels and stitch records, with its panel order.
-    pub fn from_parts(name: &str, panels: Vec<PanelSpec>, stitches: Vec<StitchRecord>) -> Pattern {
-        let mut p = Pattern::new(name);
-        p.panels = panels;
-        p.stitches = stitches
-            .into_iter()
-            .map(|r| StitchSpec { sides: r.sides.map(|(panel, edge)| StitchSide { panel, edge }), right_wrong: r.right_wrong })
-            .collect();
-        if !p.panels.is_empty() {
-            p.panel_order = Some(panel_order(&p));
-        }
-        p
-    }
-
     /// A panel by name.
     pub fn panel(&self, name: &str) -> Option<&PanelSpec> {
         self.panels.iter().find(|p| p.name == name)
@@ -176,7 +154,7 @@ impl PanelSpec {
         Vec2::from(self.vertices[i])
     }
 
-    /// Geometry of edge `i` (indices must be valid: see [`validate`]).
+    /// Geometry of edge `i` (indices must be valid: see [`validate`](crate::validate)).
     pub fn edge_geom(&self, i: usize) -> Edge {
         let e = &self.edges[i];
         let (s, t) = (self.vertex(e.endpoints[0]), self.vertex(e.endpoints[1]));

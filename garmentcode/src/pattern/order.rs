@@ -2,9 +2,26 @@
 //! then z, with a 10 cm fuzzy grouping), computed exactly as the reference does
 //! (including its use of the `Rz·Ry·Rx` convention for the stored angles).
 
-use super::Pattern;
+use super::{PanelSpec, Pattern, StitchSide, StitchSpec};
 use crate::math::Vec3;
 use crate::rotation::matrix_zyx_from_degrees;
+use crate::stitch::StitchRecord;
+
+impl Pattern {
+    /// Pattern from assembled panels and stitch records, with its panel order.
+    pub fn from_parts(name: &str, panels: Vec<PanelSpec>, stitches: Vec<StitchRecord>) -> Pattern {
+        let mut p = Pattern::new(name);
+        p.panels = panels;
+        p.stitches = stitches
+            .into_iter()
+            .map(|r| StitchSpec { sides: r.sides.map(|(panel, edge)| StitchSide { panel, edge }), right_wrong: r.right_wrong })
+            .collect();
+        if !p.panels.is_empty() {
+            p.panel_order = Some(panel_order(&p));
+        }
+        p
+    }
+}
 
 /// Group tolerance of the fuzzy sort, in cm.
 const TOLERANCE: f64 = 10.0;

@@ -3,7 +3,7 @@
 //! comparison, and a tiny deterministic random generator.
 #![allow(dead_code)]
 
-use garmentcode::yaml::{Node, Value};
+use garmentcode::parity::yaml::{Node, Value};
 
 // ----- JSON ------------------------------------------------------------------
 

@@ -1,7 +1,7 @@
 //! Error messages: position and wording for typical mistakes and for every
 //! unsupported feature.
 
-use garmentcode::yaml::{Value, parse};
+use garmentcode::parity::yaml::{Value, parse};
 
 /// (input, line, column, expected part of the message)
 const CASES: &[(&str, u32, u32, &str)] = &[

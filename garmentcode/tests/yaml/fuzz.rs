@@ -4,7 +4,7 @@
 //! 6.0 in `PYYAML_PYTHON`; ignored by default).
 
 use super::common::*;
-use garmentcode::yaml::{parse, to_string};
+use garmentcode::parity::yaml::{parse, to_string};
 use std::io::Write;
 use std::process::{Command, Stdio};
 
@@ -198,9 +198,9 @@ fn mutations_never_panic_and_accepted_inputs_round_trip() {
             Err(_) => panic!("iteration {}: parse panicked on {:?}", it, input),
         };
         // The fast path must agree with the full parser whenever it answers.
-        let full = std::panic::catch_unwind(|| garmentcode::yaml::testing::parse_full(&input))
+        let full = std::panic::catch_unwind(|| garmentcode::parity::yaml::testing::parse_full(&input))
             .unwrap_or_else(|_| panic!("iteration {}: full parser panicked on {:?}", it, input));
-        if let Some(fast) = garmentcode::yaml::testing::parse_fast(&input) {
+        if let Some(fast) = garmentcode::parity::yaml::testing::parse_fast(&input) {
             fast_used += 1;
             match &full {
                 Ok(f) => assert!(
@@ -374,7 +374,7 @@ fn pyyaml_reads_our_output() {
     // that PyYAML would write as `? key` and we write as plain keys).
     let table = parse_json(&std::fs::read_to_string(data_path("emit.json")).unwrap());
     for e in table.arr() {
-        values.push(garmentcode::yaml::Node::new(untag(e.get("value").unwrap()).unwrap()));
+        values.push(garmentcode::parity::yaml::Node::new(untag(e.get("value").unwrap()).unwrap()));
     }
     let docs: Vec<String> = values.iter().map(to_string).collect();
     let json = format!("[{}]", docs.iter().map(|d| json_string(d)).collect::<Vec<_>>().join(","));

@@ -2,7 +2,7 @@
 //! (see `tools/README.md` for how to regenerate `tests/yaml/data/*.json`).
 
 use super::common::*;
-use garmentcode::yaml::{Node, Value, parse, to_string};
+use garmentcode::parity::yaml::{Node, Value, parse, to_string};
 
 /// Every YAML file under the reference directory reads exactly as PyYAML `safe_load`.
 #[test]

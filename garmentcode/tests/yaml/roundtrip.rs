@@ -3,7 +3,7 @@
 //! (and on hand-formatted variants of it).
 
 use super::common::*;
-use garmentcode::yaml::{Node, Value, parse, testing, to_string};
+use garmentcode::parity::yaml::{Node, Value, parse, testing, to_string};
 
 /// Words typical of design files (what the fast path handles).
 const SIMPLE: &[&str] = &[

@@ -16,10 +16,10 @@ mod progress;
 mod store;
 mod summary;
 
-use crate::args::{Args, UsageError};
+use crate::cli::SampleArgs;
 use crate::commands::CliError;
 use crate::output::OutputSet;
-use garmentcode::params::write_design;
+use garmentcode::io::write_design;
 use garmentcode::{Arena, Params};
 use garments::Design;
 use garments::sample::{DatasetSampler, MAX_ATTEMPTS, NamedBody, Outcome, sample_name};
@@ -47,52 +47,29 @@ fn usage(m: String) -> CliError {
     CliError::Usage(m)
 }
 
-fn number<T: std::str::FromStr>(flag: &str, v: &str, what: &str) -> Result<T, CliError> {
-    v.trim().parse().map_err(|_| usage(format!("sample --{flag}: expected {what}, got '{v}'")))
-}
-
 impl Options {
-    fn parse(args: &mut Args) -> Result<Options, CliError> {
-        let n = args.value("n")?;
-        let seed = args.value("seed")?;
-        let out = args.value("out")?.ok_or_else(|| UsageError("sample: --out DIR is required".into()))?;
-        let design_space = args.value("design-space")?;
-        let bodies = args.value("bodies")?;
-        let jobs = args.value("jobs")?;
-        let shard = args.value("shard")?;
-        let formats = args.value("formats")?;
-        let replay = args.value("replay")?;
-        let rest = args.finish()?;
-        if let Some(extra) = rest.first() {
-            return Err(usage(format!("sample: unexpected argument '{extra}'")));
-        }
-        let seed = seed.ok_or_else(|| usage("sample: --seed S is required (any whole number from 0 to 2^64-1)".into()))?;
-        let seed: u64 = number("seed", &seed, "a whole number from 0 to 2^64-1")?;
-        let replay = replay.map(|r| parse_replay(&r)).transpose()?;
-        let n = match (n, &replay) {
-            (Some(n), _) => {
-                let n: u64 = number("n", &n, "a number of samples")?;
-                if n == 0 {
-                    return Err(usage("sample --n: must be at least 1".into()));
-                }
-                Some(n)
-            }
-            (None, None) => return Err(usage("sample: --n N (the number of samples) is required".into())),
-            (None, Some(_)) => None,
-        };
-        let jobs = match jobs {
-            Some(j) => {
-                let j: usize = number("jobs", &j, "a number of threads")?;
-                if j == 0 {
-                    return Err(usage("sample --jobs: must be at least 1".into()));
-                }
-                j
-            }
+    /// Check what clap cannot: shards, replays and format lists.
+    fn from_args(args: SampleArgs) -> Result<Options, CliError> {
+        let replay = args.replay.as_deref().map(parse_replay).transpose()?;
+        let jobs = match args.jobs {
+            Some(j) => usize::try_from(j).unwrap_or(usize::MAX),
             None => std::thread::available_parallelism().map(|p| p.get()).unwrap_or(1),
         };
-        let shard = shard.map(|s| parse_shard(&s)).transpose()?;
-        let formats = parse_formats(formats.as_deref().unwrap_or("json"))?;
-        Ok(Options { n, seed, out: PathBuf::from(out), design_space, bodies, jobs, shard, formats, replay })
+        let shard = args.shard.as_deref().map(parse_shard).transpose()?;
+        // A replay writes its sample as `build` does: with both drawings.
+        let default_formats = if replay.is_some() { "json,svg,png" } else { "json" };
+        let formats = parse_formats(args.formats.as_deref().unwrap_or(default_formats))?;
+        Ok(Options {
+            n: args.n,
+            seed: args.seed,
+            out: args.out,
+            design_space: args.design_space,
+            bodies: args.bodies,
+            jobs,
+            shard,
+            formats,
+            replay,
+        })
     }
 }
 
@@ -173,8 +150,9 @@ fn load_bodies(arg: Option<&str>) -> Result<Vec<NamedBody>, CliError> {
         if item.is_empty() {
             return Err(usage(format!("sample --bodies: empty body name in '{arg}'")));
         }
-        let (body, name) = match garments::builtin::body(&item) {
-            Some(b) => (b, item.clone()),
+        let builtin = if Path::new(&item).is_file() { None } else { garments::builtin::body(item.strip_suffix(".yaml").unwrap_or(&item)) };
+        let (body, name) = match builtin {
+            Some(b) => (b, item.strip_suffix(".yaml").unwrap_or(&item).to_string()),
             None if Path::new(&item).is_file() => {
                 let text = std::fs::read_to_string(&item).map_err(|e| CliError::Input(format!("{item}: cannot read: {e}")))?;
                 let b = garmentcode::Body::from_yaml(&text, &item).map_err(|e| CliError::Input(e.to_string()))?;
@@ -184,7 +162,8 @@ fn load_bodies(arg: Option<&str>) -> Result<Vec<NamedBody>, CliError> {
             None => {
                 let known: Vec<&str> = garments::builtin::BODIES.iter().map(|(n, _)| *n).collect();
                 return Err(CliError::Input(format!(
-                    "unknown body '{item}': not a built-in body ({}), a body file or a folder of body files",
+                    "unknown body '{item}'{}: not a built-in body ({}), a body file or a folder of body files",
+                    crate::commands::did_you_mean(&item, &known),
                     known.join(", ")
                 )));
             }
@@ -206,8 +185,8 @@ fn prepare_out(dir: &Path) -> Result<(), CliError> {
     std::fs::remove_file(&probe).map_err(fail)
 }
 
-pub fn run(mut args: Args) -> Result<i32, CliError> {
-    let opts = Options::parse(&mut args)?;
+pub fn run(args: SampleArgs) -> Result<i32, CliError> {
+    let opts = Options::from_args(args)?;
     let (space, space_label) = load_space(opts.design_space.as_deref())?;
     let bodies = load_bodies(opts.bodies.as_deref())?;
     let body_names: Vec<String> = bodies.iter().map(|b| b.name.clone()).collect();
@@ -332,7 +311,7 @@ pub fn run(mut args: Args) -> Result<i32, CliError> {
     let props = opts.out.join(summary::file_name(opts.shard));
     let mut set = OutputSet::default();
     set.add(&summary::file_name(opts.shard), summary::properties(&about, &records));
-    set.write(&opts.out).map_err(|e| CliError::Failed(format!("cannot write {}: {e}", props.display())))?;
+    set.write_files_into(&opts.out).map_err(|e| CliError::Failed(format!("cannot write {}: {e}", props.display())))?;
 
     let failed: Vec<String> = records.iter().filter(|r| r.accepted.is_none()).map(|r| sample_name(r.index)).collect();
     let rejected: usize = records.iter().map(|r| r.rejections.len()).sum();
@@ -392,7 +371,7 @@ fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<
         }
         Err(e) => set.add("error.txt", format!("{e}\n")),
     }
-    set.write(&opts.out).map_err(|e| CliError::Input(format!("cannot write {}: {e}", opts.out.display())))?;
+    crate::commands::write_folder(&set, &opts.out, false)?;
     eprintln!("{name} attempt {attempt} on {}: {verdict}; wrote {}", sampler.bodies()[body].name, opts.out.display());
     Ok(0)
 }

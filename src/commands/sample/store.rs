@@ -3,7 +3,7 @@
 //! each sample (`sample_info.json`) that lets a rerun skip finished samples and
 //! still summarise the whole dataset.
 
-use garmentcode::params::DesignWriter;
+use garmentcode::io::DesignWriter;
 use garmentcode::{Choice, Params};
 use garments::sample::{DatasetSampler, GarmentType, Outcome, Reason, Sample, sample_name};
 use serde_json::{Value, json};

@@ -5,7 +5,7 @@
 
 use super::store::Record;
 use garmentcode::Choice;
-use garmentcode::yaml::{self, Node, Value as Y};
+use garmentcode::parity::yaml::{self, Node, Value as Y};
 use garments::design::{BottomKind, UpperKind, WaistbandKind};
 use garments::sample::{Reason, sample_name};
 

@@ -185,7 +185,7 @@ fn bodies_by_name_file_or_measurements() {
     let (status, r) = post("/api/body", json!({ "body": { "measurements": { "waist": -3, "wings": 2, "height": "tall" } } }));
     assert_eq!(status, 400);
     let e = r["error"].as_str().unwrap();
-    assert!(e.contains("body.waist") && e.contains("positive") && e.contains("body.wings") && e.contains("body.height"), "{e}");
+    assert!(e.contains("body.waist") && e.contains("plausible range") && e.contains("body.wings") && e.contains("body.height"), "{e}");
     let (status, r) = post("/api/body", json!({ "body": { "yaml": "body:\n  waist: 3\n" } }));
     assert_eq!(status, 400);
     assert!(r["error"].as_str().unwrap().contains("missing measurement"), "{r}");
@@ -305,15 +305,15 @@ fn extreme_bodies_are_answered_not_panicked() {
     }
 }
 
-fn sampler() -> garmentcode::params::Sampler {
-    garmentcode::params::Sampler::new(space().clone())
+fn sampler() -> garmentcode::Sampler {
+    garmentcode::Sampler::new(space().clone())
 }
 
 #[test]
 fn random_designs_on_every_body_never_break_the_api() {
     let bodies: Vec<&str> = garments::builtin::BODIES.iter().map(|(n, _)| *n).collect();
     for i in 0..40u64 {
-        let values = sampler().sample_values(&mut garmentcode::params::sample_rng(99, i));
+        let values = sampler().sample_values(&mut garmentcode::sample_rng(99, i));
         let (status, r) = post("/api/pattern", json!({ "design": values_json(&values), "body": bodies[i as usize % bodies.len()] }));
         assert_eq!(status, 200, "{r}");
         if r["ok"] == true {
@@ -335,4 +335,14 @@ fn layout_chooses_the_drawing() {
     let (status, r) = post("/api/pattern", json!({ "layout": "diagonal" }));
     assert_eq!(status, 400);
     assert!(r["error"].as_str().unwrap().contains("placed or flat"), "{r}");
+}
+
+#[test]
+fn warnings_explain_the_references_internal_errors() {
+    let (status, r) =
+        post("/api/pattern", json!({ "design": { "meta.upper": null, "meta.wb": null, "meta.bottom": "Skirt2", "skirt.ruffle": 1.5 } }));
+    assert_eq!(status, 200, "{r}");
+    let w: Vec<&str> = r["warnings"].as_array().unwrap().iter().map(|x| x.as_str().unwrap()).collect();
+    assert!(w.iter().any(|x| x.contains("refuses this combination of parameters (Skirt2 ruffles + belt)")), "{w:?}");
+    assert!(w.iter().all(|x| !x.contains("ERROR::")), "{w:?}");
 }

@@ -285,7 +285,7 @@ function buildBodyControls() {
     const row = document.createElement("div");
     row.className = "measure";
     row.dataset.name = m.name;
-    row.title = `${m.name} (${m.unit}${m.optional ? ", optional" : ""})\n${m.description}`;
+    row.title = `${m.name} (${m.unit}, plausible ${m.min} to ${m.max}${m.optional ? ", optional" : ""})\n${m.description}`;
     const label = document.createElement("label");
     label.htmlFor = "m-" + m.name;
     label.textContent = m.name;
@@ -293,7 +293,8 @@ function buildBodyControls() {
     input.type = "number";
     input.id = "m-" + m.name;
     input.step = "any";
-    input.min = 0;
+    input.min = m.min;
+    input.max = m.max;
     input.addEventListener("change", () => {
       if (input.value === "" && m.optional) state.measurements[m.name] = null;
       else if (input.value === "" || !Number.isFinite(Number(input.value))) { showBody(); return; }

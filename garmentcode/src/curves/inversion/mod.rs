@@ -27,12 +27,15 @@ mod eig;
 #[rustfmt::skip] // generated tables
 mod gauss;
 mod objective;
-pub mod proximal;
+mod proximal;
 mod qp;
-pub mod solver;
+mod solver;
 
 pub use objective::{Terms, apply_shift, objective, objective_of, shift_of, terms};
+pub use proximal::STEPS;
 pub use solver::{Mode, Stats};
+
+use solver::{Bound, NX, Setup, TOL_STAGE1, TOL_STAGE2, run};
 
 /// A 2D point or vector (cm).
 pub type V2 = [f64; 2];
@@ -70,7 +73,7 @@ pub fn match_tangents_smooth(cps: [V2; 4], t0: V2, t1: V2, target_len: f64) -> [
 
 /// Any mode, plus solver diagnostics.
 pub fn match_tangents_with_stats(cps: [V2; 4], t0: V2, t1: V2, target_len: f64, mode: Mode) -> ([V2; 4], Stats) {
-    let (shift, stats) = solver::solve(cps, t0, t1, target_len, mode);
+    let (shift, stats) = solve(cps, t0, t1, target_len, mode);
     (apply_shift(&cps, &shift), stats)
 }
 
@@ -82,4 +85,49 @@ pub fn cubic_length(cps: &[V2; 4]) -> f64 {
 /// Unit tangent of a cubic Bézier at t.
 pub fn cubic_unit_tangent(cps: &[V2; 4], t: f64) -> V2 {
     bezier::unit_tangent(cps, t)
+}
+
+/// Solve the inversion; returns the 5 shifts and diagnostics.
+pub fn solve(cps: [V2; 4], t0: V2, t1: V2, target: f64, mode: Mode) -> ([f64; NX], Stats) {
+    solve_traced(cps, t0, t1, target, mode, false)
+}
+
+/// [`Mode::Proximal`] with a chosen number of proximal steps (for studying the trade-off:
+/// more steps reach the ripple minima from closer to a ridge but make the map steeper).
+pub fn solve_proximal(cps: [V2; 4], t0: V2, t1: V2, target: f64, steps: usize) -> ([f64; NX], Stats) {
+    solve_impl(cps, t0, t1, target, Mode::Proximal, steps, false)
+}
+
+/// [`solve`], optionally printing one line per SQP trial step to stderr (debug aid).
+pub fn solve_traced(cps: [V2; 4], t0: V2, t1: V2, target: f64, mode: Mode, trace: bool) -> ([f64; NX], Stats) {
+    solve_impl(cps, t0, t1, target, mode, proximal::STEPS, trace)
+}
+
+fn solve_impl(cps: [V2; 4], t0: V2, t1: V2, target: f64, mode: Mode, steps: usize, trace: bool) -> ([f64; NX], Stats) {
+    let s = Setup::new(cps, t0, t1, target);
+    let mut st = Stats::default();
+    // Fall back to the input curve if the guess is degenerate (never seen in practice).
+    let mut x0 = s.initial_guess();
+    if !s.objective(&x0, Bound::Envelope).is_finite() {
+        x0 = [0.0; NX];
+    }
+    let x = if mode == Mode::RippleFree {
+        let r = run(&s, x0, Bound::Envelope, TOL_STAGE2, 0, &mut st, trace);
+        st.converged = r.ok;
+        r.x
+    } else if mode == Mode::Proximal {
+        let r = run(&s, x0, Bound::Envelope, TOL_STAGE2, 0, &mut st, trace);
+        st.converged = r.ok;
+        match proximal::frozen_model(&s, &r) {
+            Some(ginv) => proximal::refine(&s, r.x, &ginv, steps, &mut st),
+            None => r.x,
+        }
+    } else {
+        let r1 = run(&s, x0, Bound::Envelope, TOL_STAGE1, 0, &mut st, trace);
+        let r2 = run(&s, r1.x, Bound::Samples, TOL_STAGE2, 1, &mut st, trace);
+        st.converged = r1.ok && r2.ok;
+        r2.x
+    };
+    // Degenerate input (e.g. non-finite values): return the input curve unchanged.
+    if x.iter().all(|v| v.is_finite()) { (x, st) } else { ([0.0; NX], st) }
 }

@@ -52,9 +52,9 @@ const LM_DECREASE: f64 = 10.0;
 /// Initial arm length of the inner control points, as a fraction of the target length.
 const INIT_ARM: f64 = 0.45;
 /// Stage 1 stops when the model predicts less than this relative decrease.
-const TOL_STAGE1: f64 = 1e-8;
+pub(crate) const TOL_STAGE1: f64 = 1e-8;
 /// Stage 2 (and the ripple-free mode) stop at the rounding level.
-const TOL_STAGE2: f64 = 1e-15;
+pub(crate) const TOL_STAGE2: f64 = 1e-15;
 
 pub(crate) type Mat = [[f64; NX]; NX];
 
@@ -294,7 +294,7 @@ pub(crate) struct Cons {
 }
 
 impl Setup {
-    fn new(cps: [V2; 4], t0: V2, t1: V2, target: f64) -> Setup {
+    pub(crate) fn new(cps: [V2; 4], t0: V2, t1: V2, target: f64) -> Setup {
         let dir = chord_dir(&cps);
         let step = 1.0 / (NS - 1) as f64;
         let grid = std::array::from_fn(|k| Sample::new(if k == NS - 1 { 1.0 } else { k as f64 * step }, dir));
@@ -316,7 +316,7 @@ impl Setup {
     /// target length from its end point (both tangent terms vanish; the arm length is an
     /// empirical middle between arc-like sleeves and S-shaped hoods), end not moved.
     /// A continuous function of the inputs, and closer to the optimum than the input curve.
-    fn initial_guess(&self) -> [f64; NX] {
+    pub(crate) fn initial_guess(&self) -> [f64; NX] {
         let (p, h) = (&self.p, INIT_ARM * self.target);
         [
             p[0][0] + h * self.t0[0] - p[1][0],
@@ -551,7 +551,7 @@ impl Setup {
 
     /// The objective as the solver sees it (fixed-rule length; max of |k| over the whole
     /// curve for `Bound::Envelope`, else over the 70 samples).
-    fn objective(&self, x: &[f64; NX], bound: Bound) -> f64 {
+    pub(crate) fn objective(&self, x: &[f64; NX], bound: Bound) -> f64 {
         let p = self.points(x);
         let mut kap = [0.0; NS];
         let mut zmax = 0.0f64;
@@ -617,51 +617,6 @@ pub enum Mode {
     /// The ripple-free objective (max curvature over the whole curve): continuous and
     /// piecewise smooth in the inputs, slightly higher reference objective at times.
     RippleFree,
-}
-
-/// Solve the inversion; returns the 5 shifts and diagnostics.
-pub fn solve(cps: [V2; 4], t0: V2, t1: V2, target: f64, mode: Mode) -> ([f64; NX], Stats) {
-    solve_traced(cps, t0, t1, target, mode, false)
-}
-
-/// [`Mode::Proximal`] with a chosen number of proximal steps (for studying the trade-off:
-/// more steps reach the ripple minima from closer to a ridge but make the map steeper).
-pub fn solve_proximal(cps: [V2; 4], t0: V2, t1: V2, target: f64, steps: usize) -> ([f64; NX], Stats) {
-    solve_impl(cps, t0, t1, target, Mode::Proximal, steps, false)
-}
-
-/// [`solve`], optionally printing one line per SQP trial step to stderr (debug aid).
-pub fn solve_traced(cps: [V2; 4], t0: V2, t1: V2, target: f64, mode: Mode, trace: bool) -> ([f64; NX], Stats) {
-    solve_impl(cps, t0, t1, target, mode, super::proximal::STEPS, trace)
-}
-
-fn solve_impl(cps: [V2; 4], t0: V2, t1: V2, target: f64, mode: Mode, steps: usize, trace: bool) -> ([f64; NX], Stats) {
-    let s = Setup::new(cps, t0, t1, target);
-    let mut st = Stats::default();
-    // Fall back to the input curve if the guess is degenerate (never seen in practice).
-    let mut x0 = s.initial_guess();
-    if !s.objective(&x0, Bound::Envelope).is_finite() {
-        x0 = [0.0; NX];
-    }
-    let x = if mode == Mode::RippleFree {
-        let r = run(&s, x0, Bound::Envelope, TOL_STAGE2, 0, &mut st, trace);
-        st.converged = r.ok;
-        r.x
-    } else if mode == Mode::Proximal {
-        let r = run(&s, x0, Bound::Envelope, TOL_STAGE2, 0, &mut st, trace);
-        st.converged = r.ok;
-        match super::proximal::frozen_model(&s, &r) {
-            Some(ginv) => super::proximal::refine(&s, r.x, &ginv, steps, &mut st),
-            None => r.x,
-        }
-    } else {
-        let r1 = run(&s, x0, Bound::Envelope, TOL_STAGE1, 0, &mut st, trace);
-        let r2 = run(&s, r1.x, Bound::Samples, TOL_STAGE2, 1, &mut st, trace);
-        st.converged = r1.ok && r2.ok;
-        r2.x
-    };
-    // Degenerate input (e.g. non-finite values): return the input curve unchanged.
-    if x.iter().all(|v| v.is_finite()) { (x, st) } else { ([0.0; NX], st) }
 }
 
 /// Lagrangian Hessian: the smooth part plus the multiplier-weighted curvature Hessians of
@@ -758,7 +713,7 @@ pub(crate) struct RunOut {
 }
 
 /// SQP from `x0` on the objective with the curvature bound `bound`.
-fn run(s: &Setup, x0: [f64; NX], bound: Bound, tol: f64, stage: usize, st: &mut Stats, trace: bool) -> RunOut {
+pub(crate) fn run(s: &Setup, x0: [f64; NX], bound: Bound, tol: f64, stage: usize, st: &mut Stats, trace: bool) -> RunOut {
     let mut x = x0;
     let mut f = s.objective(&x, bound);
     // Multipliers of the last accepted QP and the constraint set they belong to.

@@ -1,0 +1,689 @@
+//! Reading and writing `specification.json`.
+//!
+//! Writing reproduces the reference's layout (`json.dump(indent=2)`, the same key
+//! order) with floats in Python's shortest round-trip form; `-0.0` is written `0.0`
+//! and non-finite numbers are refused, so the same pattern always gives the same
+//! bytes. Reading accepts the reference's files and its legacy variants (list-form
+//! curvature, absolute curvature coordinates, other units) and reports malformed
+//! input with the JSON path of the offending value.
+
+use crate::error::{Error, Result};
+use crate::math::{Vec2, abs_to_rel};
+use crate::parity::float_repr::write_python_float;
+use crate::pattern::{Curvature, EdgeSpec, PanelSpec, Pattern, Properties, StitchSide, StitchSpec};
+use serde_json::Value;
+use std::fmt::Write;
+
+/// Largest coordinate, translation or arc radius a specification may hold, in cm.
+pub const MAX_EXTENT_CM: f64 = 10_000.0;
+/// Largest relative control-point coordinate (in edge lengths).
+pub const MAX_CONTROL: f64 = 1_000.0;
+/// Most panels a specification may hold.
+pub const MAX_PANELS: usize = 1_000;
+/// Most edges one panel may have.
+pub const MAX_EDGES_PER_PANEL: usize = 1_000;
+
+impl Pattern {
+    /// Parse a specification file's text.
+    pub fn from_json(text: &str) -> Result<Pattern> {
+        let v: Value = serde_json::from_str(text).map_err(|e| Error::Input(format!("malformed JSON: {e}")))?;
+        let mut p = read_pattern(&v)?;
+        p.normalize_units()?;
+        p.check_extent()?;
+        Ok(p)
+    }
+
+    /// Refuse geometry no garment has, before any algorithm whose work grows with
+    /// it runs: coordinates beyond [`MAX_EXTENT_CM`], control points far outside
+    /// their edge, and more panels or edges than [`MAX_PANELS`] and
+    /// [`MAX_EDGES_PER_PANEL`].
+    fn check_extent(&self) -> Result<()> {
+        let far = |x: f64| x.abs() > MAX_EXTENT_CM;
+        if self.panels.len() > MAX_PANELS {
+            return Err(Error::Input(format!("{} panels: at most {MAX_PANELS} are accepted", self.panels.len())));
+        }
+        for p in &self.panels {
+            let at = format!("pattern.panels.{}", p.name);
+            if p.edges.len() > MAX_EDGES_PER_PANEL {
+                return Err(Error::Input(format!("{at}: {} edges, at most {MAX_EDGES_PER_PANEL} are accepted", p.edges.len())));
+            }
+            let coords = p.vertices.iter().flatten().chain(&p.translation);
+            if let Some(x) = coords.copied().find(|x| far(*x)) {
+                return Err(Error::Input(format!(
+                    "{at}: coordinate {x} cm is beyond ±{MAX_EXTENT_CM} cm (100 m); no garment is that large"
+                )));
+            }
+            for (i, e) in p.edges.iter().enumerate() {
+                let bad = match &e.curvature {
+                    Some(Curvature::Quadratic(c)) => c.iter().any(|x| x.abs() > MAX_CONTROL),
+                    Some(Curvature::Cubic(c1, c2)) => c1.iter().chain(c2).any(|x| x.abs() > MAX_CONTROL),
+                    Some(Curvature::Circle { radius, .. }) => far(*radius),
+                    None => false,
+                };
+                if bad {
+                    return Err(Error::Input(format!(
+                        "{at}.edges[{i}].curvature: a control point more than {MAX_CONTROL} edge lengths away or a radius beyond {MAX_EXTENT_CM} cm"
+                    )));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The specification file's text.
+    pub fn to_json(&self) -> Result<String> {
+        let mut w = Writer { out: String::with_capacity(64 * 1024), depth: 0 };
+        w.open('{');
+        w.field("pattern");
+        w.open('{');
+        w.field("panels");
+        if self.panels.is_empty() {
+            w.out.push_str("{}");
+        } else {
+            w.open('{');
+            for (i, p) in self.panels.iter().enumerate() {
+                w.sep(i);
+                w.key(&p.name);
+                write_panel(&mut w, p)?;
+            }
+            w.close('}');
+        }
+        w.sep(1);
+        w.field("stitches");
+        if self.stitches.is_empty() {
+            w.out.push_str("[]");
+        } else {
+            w.open('[');
+            for (i, s) in self.stitches.iter().enumerate() {
+                w.sep(i);
+                w.open('[');
+                for (k, side) in s.sides.iter().enumerate() {
+                    w.sep(k);
+                    w.open('{');
+                    w.field("panel");
+                    w.string(&side.panel);
+                    w.sep(1);
+                    w.field("edge");
+                    w.index(side.edge);
+                    w.close('}');
+                }
+                if s.right_wrong {
+                    w.sep(2);
+                    w.literal("right_wrong");
+                }
+                w.close(']');
+            }
+            w.close(']');
+        }
+        if let Some(order) = &self.panel_order {
+            w.sep(2);
+            w.field("panel_order");
+            w.string_list(order);
+        }
+        w.close('}');
+        w.sep(1);
+        w.field("parameters");
+        w.value(&self.parameters)?;
+        w.sep(2);
+        w.field("parameter_order");
+        w.value(&self.parameter_order)?;
+        w.sep(3);
+        w.field("properties");
+        w.open('{');
+        let pr = &self.properties;
+        w.field("curvature_coords");
+        w.string(&pr.curvature_coords);
+        w.sep(1);
+        w.field("normalize_panel_translation");
+        w.out.push_str(if pr.normalize_panel_translation { "true" } else { "false" });
+        w.sep(2);
+        w.field("normalized_edge_loops");
+        w.out.push_str(if pr.normalized_edge_loops { "true" } else { "false" });
+        w.sep(3);
+        w.field("units_in_meter");
+        if pr.units_in_meter.fract() == 0.0 && pr.units_in_meter.abs() < 1e15 {
+            let _ = write!(w.out, "{}", pr.units_in_meter as i64);
+        } else {
+            w.float(pr.units_in_meter)?;
+        }
+        for (k, v) in &pr.extra {
+            w.sep(4);
+            w.key(k);
+            w.value(v)?;
+        }
+        w.close('}');
+        w.close('}');
+        w.out.push('\n');
+        Ok(w.out)
+    }
+
+    /// Convert legacy unit scales to centimetres.
+    fn normalize_units(&mut self) -> Result<()> {
+        let u = self.properties.units_in_meter;
+        if !(u.is_finite() && (1.0..=1000.0).contains(&u)) {
+            return Err(Error::Input(format!(
+                "properties.units_in_meter: expected 1 (metres) to 1000 (millimetres), usually 100 (centimetres), got {u}"
+            )));
+        }
+        if u != 100.0 {
+            let k = 100.0 / u;
+            for p in &mut self.panels {
+                p.vertices.iter_mut().for_each(|v| *v = [v[0] * k, v[1] * k]);
+                p.translation = p.translation.map(|t| t * k);
+                for e in &mut p.edges {
+                    if let Some(Curvature::Circle { radius, .. }) = &mut e.curvature {
+                        *radius *= k;
+                    }
+                }
+            }
+            self.properties.extra.push(("original_units_in_meter".into(), serde_json::json!(u)));
+            self.properties.units_in_meter = 100.0;
+        }
+        Ok(())
+    }
+}
+
+fn write_panel(w: &mut Writer, p: &PanelSpec) -> Result<()> {
+    w.open('{');
+    w.field("translation");
+    w.float_list(&p.translation)?;
+    w.sep(1);
+    w.field("rotation");
+    w.float_list(&p.rotation)?;
+    w.sep(2);
+    w.field("vertices");
+    if p.vertices.is_empty() {
+        w.out.push_str("[]");
+    } else {
+        w.open('[');
+        for (i, v) in p.vertices.iter().enumerate() {
+            w.sep(i);
+            w.float_list(v)?;
+        }
+        w.close(']');
+    }
+    w.sep(3);
+    w.field("edges");
+    if p.edges.is_empty() {
+        w.out.push_str("[]");
+    } else {
+        w.open('[');
+        for (i, e) in p.edges.iter().enumerate() {
+            w.sep(i);
+            w.open('{');
+            w.field("endpoints");
+            w.open('[');
+            w.index(e.endpoints[0]);
+            w.sep(1);
+            w.index(e.endpoints[1]);
+            w.close(']');
+            if let Some(l) = &e.label {
+                w.sep(1);
+                w.field("label");
+                w.string(l);
+            }
+            if let Some(c) = &e.curvature {
+                w.sep(1);
+                w.field("curvature");
+                w.open('{');
+                w.field("type");
+                match c {
+                    Curvature::Quadratic(cp) => {
+                        w.literal("quadratic");
+                        w.sep(1);
+                        w.field("params");
+                        w.open('[');
+                        w.float_list(cp)?;
+                        w.close(']');
+                    }
+                    Curvature::Cubic(c1, c2) => {
+                        w.literal("cubic");
+                        w.sep(1);
+                        w.field("params");
+                        w.open('[');
+                        w.float_list(c1)?;
+                        w.sep(1);
+                        w.float_list(c2)?;
+                        w.close(']');
+                    }
+                    Curvature::Circle { radius, large_arc, right } => {
+                        w.literal("circle");
+                        w.sep(1);
+                        w.field("params");
+                        w.open('[');
+                        w.float(*radius)?;
+                        w.sep(1);
+                        w.out.push(if *large_arc { '1' } else { '0' });
+                        w.sep(2);
+                        w.out.push(if *right { '1' } else { '0' });
+                        w.close(']');
+                    }
+                }
+                w.close('}');
+            }
+            w.close('}');
+        }
+        w.close(']');
+    }
+    if let Some(l) = &p.label {
+        w.sep(4);
+        w.field("label");
+        w.string(l);
+    }
+    w.close('}');
+    Ok(())
+}
+
+/// Indented JSON writer in the layout of Python's `json.dump(indent=2)`.
+struct Writer {
+    out: String,
+    depth: usize,
+}
+
+impl Writer {
+    fn newline(&mut self) {
+        /// A newline and the indentation of the deepest level written (one copy).
+        const INDENT: &str = "\n                                        ";
+        match INDENT.get(..1 + 2 * self.depth) {
+            Some(s) => self.out.push_str(s),
+            None => {
+                self.out.push('\n');
+                for _ in 0..self.depth {
+                    self.out.push_str("  ");
+                }
+            }
+        }
+    }
+    fn open(&mut self, c: char) {
+        self.out.push(c);
+        self.depth += 1;
+        self.newline();
+    }
+    fn close(&mut self, c: char) {
+        self.depth -= 1;
+        self.newline();
+        self.out.push(c);
+    }
+    /// Separator before item `i` of a container (nothing before the first).
+    fn sep(&mut self, i: usize) {
+        if i > 0 {
+            /// A comma, a newline and the indentation (one copy).
+            const SEP: &str = ",\n                                        ";
+            match SEP.get(..2 + 2 * self.depth) {
+                Some(s) => self.out.push_str(s),
+                None => {
+                    self.out.push(',');
+                    self.newline();
+                }
+            }
+        }
+    }
+    fn key(&mut self, k: &str) {
+        self.string(k);
+        self.out.push_str(": ");
+    }
+    /// A key that is one of this writer's own names (plain ASCII: no escapes).
+    fn field(&mut self, k: &'static str) {
+        self.out.push('"');
+        self.out.push_str(k);
+        self.out.push_str("\": ");
+    }
+    /// A string value that is one of this writer's own names.
+    fn literal(&mut self, s: &'static str) {
+        self.out.push('"');
+        self.out.push_str(s);
+        self.out.push('"');
+    }
+    fn string(&mut self, s: &str) {
+        // Names and labels are plain ASCII and need no escapes; anything else goes
+        // through serde_json, which escapes like Python's json with ensure_ascii=False.
+        if s.bytes().all(|b| (0x20..0x7f).contains(&b) && b != b'"' && b != b'\\') {
+            self.out.push('"');
+            self.out.push_str(s);
+            self.out.push('"');
+        } else {
+            self.out.push_str(&serde_json::to_string(s).expect("strings serialise"));
+        }
+    }
+    /// A non-negative integer (vertex and edge indices), without `fmt`.
+    fn index(&mut self, i: usize) {
+        let mut digits = [0u8; 20];
+        let mut n = 0;
+        let mut rest = i;
+        loop {
+            digits[n] = b'0' + (rest % 10) as u8;
+            n += 1;
+            rest /= 10;
+            if rest == 0 {
+                break;
+            }
+        }
+        for &d in digits[..n].iter().rev() {
+            self.out.push(char::from(d));
+        }
+    }
+    fn string_list(&mut self, items: &[String]) {
+        if items.is_empty() {
+            self.out.push_str("[]");
+            return;
+        }
+        self.open('[');
+        for (i, s) in items.iter().enumerate() {
+            self.sep(i);
+            self.string(s);
+        }
+        self.close(']');
+    }
+    fn float(&mut self, x: f64) -> Result<()> {
+        if !x.is_finite() {
+            return Err(Error::Geometry(format!("cannot write the non-finite number {x}")));
+        }
+        write_python_float(&mut self.out, x);
+        Ok(())
+    }
+    fn float_list(&mut self, xs: &[f64]) -> Result<()> {
+        self.open('[');
+        for (i, x) in xs.iter().enumerate() {
+            self.sep(i);
+            self.float(*x)?;
+        }
+        self.close(']');
+        Ok(())
+    }
+    fn value(&mut self, v: &Value) -> Result<()> {
+        match v {
+            Value::Null => self.out.push_str("null"),
+            Value::Bool(b) => self.out.push_str(if *b { "true" } else { "false" }),
+            Value::Number(n) => {
+                if let Some(i) = n.as_i64() {
+                    let _ = write!(self.out, "{i}");
+                } else {
+                    self.float(n.as_f64().unwrap_or(f64::NAN))?;
+                }
+            }
+            Value::String(s) => self.string(s),
+            Value::Array(items) => {
+                if items.is_empty() {
+                    self.out.push_str("[]");
+                } else {
+                    self.open('[');
+                    for (i, x) in items.iter().enumerate() {
+                        self.sep(i);
+                        self.value(x)?;
+                    }
+                    self.close(']');
+                }
+            }
+            Value::Object(map) => {
+                if map.is_empty() {
+                    self.out.push_str("{}");
+                } else {
+                    self.open('{');
+                    for (i, (k, x)) in map.iter().enumerate() {
+                        self.sep(i);
+                        self.key(k);
+                        self.value(x)?;
+                    }
+                    self.close('}');
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+// ---------------------------------------------------------------- reading
+
+fn read_pattern(v: &Value) -> Result<Pattern> {
+    let root = obj(v, "")?;
+    let pat = obj(get(root, "pattern", "")?, "pattern")?;
+    let mut p = Pattern::new("pattern");
+    if let Some(props) = root.get("properties") {
+        p.properties = read_properties(props)?;
+    }
+    let absolute = p.properties.curvature_coords == "absolute";
+    let panels = obj(get(pat, "panels", "pattern")?, "pattern.panels")?;
+    for (name, pv) in panels {
+        p.panels.push(read_panel(name, pv, absolute)?);
+    }
+    if let Some(st) = pat.get("stitches") {
+        let list = arr(st, "pattern.stitches")?;
+        for (i, s) in list.iter().enumerate() {
+            p.stitches.push(read_stitch(s, &format!("pattern.stitches[{i}]"))?);
+        }
+    }
+    if let Some(order) = pat.get("panel_order") {
+        let list = arr(order, "pattern.panel_order")?;
+        let mut names = Vec::new();
+        for (i, n) in list.iter().enumerate() {
+            names.push(string(n, &format!("pattern.panel_order[{i}]"))?.to_string());
+        }
+        p.panel_order = Some(names);
+    }
+    if let Some(params) = root.get("parameters") {
+        p.parameters = params.clone();
+    }
+    if let Some(order) = root.get("parameter_order") {
+        p.parameter_order = order.clone();
+    }
+    if absolute {
+        p.properties.curvature_coords = "relative".into();
+    }
+    Ok(p)
+}
+
+fn read_properties(v: &Value) -> Result<Properties> {
+    let m = obj(v, "properties")?;
+    let mut pr = Properties::default();
+    for (k, x) in m {
+        let path = format!("properties.{k}");
+        match k.as_str() {
+            "curvature_coords" => {
+                let s = string(x, &path)?;
+                if s != "relative" && s != "absolute" {
+                    return Err(Error::Input(format!("{path}: expected \"relative\" or \"absolute\", got \"{s}\"")));
+                }
+                pr.curvature_coords = s.to_string();
+            }
+            "normalize_panel_translation" => pr.normalize_panel_translation = boolean(x, &path)?,
+            "normalized_edge_loops" => pr.normalized_edge_loops = boolean(x, &path)?,
+            "units_in_meter" => pr.units_in_meter = number(x, &path)?,
+            _ => pr.extra.push((k.clone(), x.clone())),
+        }
+    }
+    Ok(pr)
+}
+
+fn read_panel(name: &str, v: &Value, absolute: bool) -> Result<PanelSpec> {
+    let path = format!("pattern.panels.{name}");
+    let m = obj(v, &path)?;
+    let translation = vec_n::<3>(get(m, "translation", &path)?, &format!("{path}.translation"))?;
+    let rotation = vec_n::<3>(get(m, "rotation", &path)?, &format!("{path}.rotation"))?;
+    let vl = arr(get(m, "vertices", &path)?, &format!("{path}.vertices"))?;
+    let mut vertices = Vec::with_capacity(vl.len());
+    for (i, x) in vl.iter().enumerate() {
+        vertices.push(vec_n::<2>(x, &format!("{path}.vertices[{i}]"))?);
+    }
+    let el = arr(get(m, "edges", &path)?, &format!("{path}.edges"))?;
+    let mut edges = Vec::with_capacity(el.len());
+    for (i, x) in el.iter().enumerate() {
+        edges.push(read_edge(x, &format!("{path}.edges[{i}]"), &vertices, absolute)?);
+    }
+    let label = match m.get("label") {
+        None | Some(Value::Null) => None,
+        Some(l) => Some(string(l, &format!("{path}.label"))?.to_string()).filter(|s| !s.is_empty()),
+    };
+    Ok(PanelSpec { name: name.to_string(), translation, rotation, vertices, edges, label })
+}
+
+fn read_edge(v: &Value, path: &str, vertices: &[[f64; 2]], absolute: bool) -> Result<EdgeSpec> {
+    let m = obj(v, path)?;
+    let ep = arr(get(m, "endpoints", path)?, &format!("{path}.endpoints"))?;
+    if ep.len() != 2 {
+        return Err(Error::Input(format!("{path}.endpoints: expected 2 vertex indices, got {}", ep.len())));
+    }
+    let mut endpoints = [0usize; 2];
+    for (k, x) in ep.iter().enumerate() {
+        endpoints[k] = index(x, &format!("{path}.endpoints[{k}]"))?;
+    }
+    let label = match m.get("label") {
+        None | Some(Value::Null) => None,
+        Some(l) => Some(string(l, &format!("{path}.label"))?.to_string()).filter(|s| !s.is_empty()),
+    };
+    let curvature = match m.get("curvature") {
+        None | Some(Value::Null) => None,
+        Some(Value::Array(_)) => {
+            // Legacy form: a bare control point of a quadratic.
+            let cp = vec_n::<2>(&m["curvature"], &format!("{path}.curvature"))?;
+            let cp = if absolute {
+                let (s, e) = endpoint_positions(vertices, endpoints, path)?;
+                abs_to_rel(s, e, Vec2::from(cp)).into()
+            } else {
+                cp
+            };
+            Some(Curvature::Quadratic(cp))
+        }
+        Some(c) => {
+            let cpath = format!("{path}.curvature");
+            let cm = obj(c, &cpath)?;
+            let ty = string(get(cm, "type", &cpath)?, &format!("{cpath}.type"))?;
+            let params = arr(get(cm, "params", &cpath)?, &format!("{cpath}.params"))?;
+            let ppath = format!("{cpath}.params");
+            let expect = |n: usize| -> Result<()> {
+                if params.len() != n {
+                    return Err(Error::Input(format!("{ppath}: a {ty} curvature needs {n} parameters, got {}", params.len())));
+                }
+                Ok(())
+            };
+            match ty {
+                "quadratic" => {
+                    expect(1)?;
+                    Some(Curvature::Quadratic(vec_n::<2>(&params[0], &format!("{ppath}[0]"))?))
+                }
+                "cubic" => {
+                    expect(2)?;
+                    Some(Curvature::Cubic(vec_n::<2>(&params[0], &format!("{ppath}[0]"))?, vec_n::<2>(&params[1], &format!("{ppath}[1]"))?))
+                }
+                "circle" => {
+                    expect(3)?;
+                    let radius = number(&params[0], &format!("{ppath}[0]"))?;
+                    if radius <= 0.0 {
+                        return Err(Error::Input(format!("{ppath}[0]: an arc radius must be positive, got {radius}")));
+                    }
+                    Some(Curvature::Circle {
+                        radius,
+                        large_arc: flag(&params[1], &format!("{ppath}[1]"))?,
+                        right: flag(&params[2], &format!("{ppath}[2]"))?,
+                    })
+                }
+                other => {
+                    return Err(Error::Input(format!(
+                        "{cpath}.type: unknown curvature type \"{other}\" (expected quadratic, cubic or circle)"
+                    )));
+                }
+            }
+        }
+    };
+    Ok(EdgeSpec { endpoints, label, curvature })
+}
+
+fn endpoint_positions(vertices: &[[f64; 2]], ep: [usize; 2], path: &str) -> Result<(Vec2, Vec2)> {
+    let get = |i: usize| {
+        vertices.get(i).map(|v| Vec2::from(*v)).ok_or_else(|| Error::Input(format!("{path}.endpoints: vertex {i} does not exist")))
+    };
+    Ok((get(ep[0])?, get(ep[1])?))
+}
+
+fn read_stitch(v: &Value, path: &str) -> Result<StitchSpec> {
+    let list = arr(v, path)?;
+    if list.len() < 2 || list.len() > 3 {
+        return Err(Error::Input(format!("{path}: a stitch has two sides and an optional \"right_wrong\", got {} items", list.len())));
+    }
+    let mut sides = Vec::with_capacity(2);
+    for (k, s) in list.iter().take(2).enumerate() {
+        let sp = format!("{path}[{k}]");
+        let m = obj(s, &sp)?;
+        let panel = string(get(m, "panel", &sp)?, &format!("{sp}.panel"))?.to_string();
+        let edge = index(get(m, "edge", &sp)?, &format!("{sp}.edge"))?;
+        sides.push(StitchSide { panel, edge });
+    }
+    let right_wrong = match list.get(2) {
+        None => false,
+        Some(Value::String(s)) if s == "right_wrong" => true,
+        Some(other) => return Err(Error::Input(format!("{path}[2]: expected \"right_wrong\", got {other}"))),
+    };
+    let b = sides.pop().expect("two sides");
+    let a = sides.pop().expect("two sides");
+    Ok(StitchSpec { sides: [a, b], right_wrong })
+}
+
+fn obj<'a>(v: &'a Value, path: &str) -> Result<&'a serde_json::Map<String, Value>> {
+    v.as_object().ok_or_else(|| Error::Input(format!("{}: expected an object, got {}", name(path), kind(v))))
+}
+
+fn arr<'a>(v: &'a Value, path: &str) -> Result<&'a Vec<Value>> {
+    v.as_array().ok_or_else(|| Error::Input(format!("{}: expected a list, got {}", name(path), kind(v))))
+}
+
+fn get<'a>(m: &'a serde_json::Map<String, Value>, key: &str, path: &str) -> Result<&'a Value> {
+    m.get(key).ok_or_else(|| {
+        let p = if path.is_empty() { key.to_string() } else { format!("{path}.{key}") };
+        Error::Input(format!("{p}: missing"))
+    })
+}
+
+fn string<'a>(v: &'a Value, path: &str) -> Result<&'a str> {
+    v.as_str().ok_or_else(|| Error::Input(format!("{path}: expected a string, got {}", kind(v))))
+}
+
+fn boolean(v: &Value, path: &str) -> Result<bool> {
+    v.as_bool().ok_or_else(|| Error::Input(format!("{path}: expected true or false, got {}", kind(v))))
+}
+
+fn number(v: &Value, path: &str) -> Result<f64> {
+    let x = v.as_f64().ok_or_else(|| Error::Input(format!("{path}: expected a number, got {}", kind(v))))?;
+    if !x.is_finite() {
+        return Err(Error::Input(format!("{path}: expected a finite number, got {x}")));
+    }
+    Ok(x)
+}
+
+fn index(v: &Value, path: &str) -> Result<usize> {
+    v.as_u64().map(|x| x as usize).ok_or_else(|| Error::Input(format!("{path}: expected a non-negative integer index, got {}", kind(v))))
+}
+
+fn flag(v: &Value, path: &str) -> Result<bool> {
+    match v {
+        Value::Bool(b) => Ok(*b),
+        Value::Number(n) if n.as_f64() == Some(0.0) => Ok(false),
+        Value::Number(n) if n.as_f64() == Some(1.0) => Ok(true),
+        _ => Err(Error::Input(format!("{path}: expected 0 or 1, got {}", kind(v)))),
+    }
+}
+
+fn vec_n<const N: usize>(v: &Value, path: &str) -> Result<[f64; N]> {
+    let list = arr(v, path)?;
+    if list.len() != N {
+        return Err(Error::Input(format!("{path}: expected {N} numbers, got {}", list.len())));
+    }
+    let mut out = [0.0; N];
+    for (i, x) in list.iter().enumerate() {
+        out[i] = number(x, &format!("{path}[{i}]"))?;
+    }
+    Ok(out)
+}
+
+fn name(path: &str) -> &str {
+    if path.is_empty() { "the file" } else { path }
+}
+
+fn kind(v: &Value) -> String {
+    match v {
+        Value::Null => "null".into(),
+        Value::Bool(b) => format!("{b}"),
+        Value::Number(n) => format!("the number {n}"),
+        Value::String(s) => format!("the string \"{s}\""),
+        Value::Array(_) => "a list".into(),
+        Value::Object(_) => "an object".into(),
+    }
+}

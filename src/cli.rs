@@ -1,0 +1,296 @@
+//! The command line, declared once with clap: parsing, `--help` of every command,
+//! `--version`, suggestions for mistyped commands and flags, and shell completions
+//! all come from these definitions.
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+/// garmentcode: parametric sewing patterns (a Rust implementation of GarmentCode).
+#[derive(Parser, Debug)]
+#[command(name = "garmentcode", version, propagate_version = true, arg_required_else_help = true)]
+#[command(after_help = "Run `garmentcode <COMMAND> --help` for the options of a command.")]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The sub-commands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Build a garment from a design and a body into a folder.
+    #[command(long_about = BUILD_ABOUT)]
+    Build(BuildArgs),
+    /// Print the design space: every parameter with its type, range, default and sampling probability.
+    Schema(SchemaArgs),
+    /// Validate a pattern (specification.json): structural errors and warnings.
+    #[command(long_about = CHECK_ABOUT)]
+    Check(CheckArgs),
+    /// Re-emit a pattern and draw it (pattern.svg, pattern.png).
+    #[command(long_about = RENDER_ABOUT)]
+    Render(RenderArgs),
+    /// Judge whether two patterns are the same garment by geometry.
+    #[command(long_about = COMPARE_ABOUT)]
+    Compare(CompareArgs),
+    /// Make a dataset of random garments, or replay one sample of it.
+    #[command(long_about = SAMPLE_ABOUT)]
+    Sample(SampleArgs),
+    /// Run the web configurator (a page with a control for every parameter, and its JSON API).
+    #[command(long_about = SERVE_ABOUT)]
+    Serve(ServeArgs),
+    /// Print a shell completion script (e.g. `garmentcode completions bash > ~/.local/share/bash-completion/completions/garmentcode`).
+    Completions(CompletionsArgs),
+}
+
+const BUILD_ABOUT: &str = "\
+Build a garment: DIR/specification.json, pattern.svg, pattern.png, design_params.yaml, \
+body_measurements.yaml and checks.json.
+
+The reference's checks (design filter, total length, self-intersection) are printed as warnings; \
+--strict rejects a design that fails one (exit 1, nothing written).
+
+The output folder is written whole: into a temporary folder first, then swapped in. An existing \
+folder is replaced only when it holds nothing but files garmentcode writes (or with --force).";
+
+const CHECK_ABOUT: &str = "\
+Validate a pattern: errors (open loops, bad indices, degenerate edges, dangling stitches, edges \
+stitched twice) and warnings (self-intersections; stitched edges of different lengths, which are \
+gathers when the design asks for them). Exit 1 on errors. With --strict also on the warnings \
+`build --strict` rejects (self-intersections); length differences are only reported.";
+
+const RENDER_ABOUT: &str = "\
+Re-emit DIR/specification.json and draw DIR/pattern.svg and DIR/pattern.png. A pattern with \
+structural errors (see `garmentcode check`) is refused unless --force, which draws it anyway.";
+
+const COMPARE_ABOUT: &str = "\
+Judge whether two patterns are the same garment by geometry: outlines, placement, perimeters and \
+stitches within --tol (vertex order and JSON layout do not matter). With --cases, every case folder \
+(specification.json or error.txt) of EXPECTED_DIR against the same folder in ACTUAL_DIR. Exit 0 when \
+all pass, else 1.
+
+Sleeve, cuff and hood panels come from a numerical fit that is chaotic in the reference (tiny \
+changes of input give visibly different curves), so by default they are judged by how they sew \
+(lengths of the seams they share, and placement) rather than point by point; reports call them \
+\"chaotic panels\". --no-chaotic-rule compares them point by point too.";
+
+const SAMPLE_ABOUT: &str = "\
+A dataset of N random garments: DIR/rand_0000000 ... each with rand_NNNNNNN_specification.json (and \
+_pattern.svg/.png as asked), design_params.yaml, body_measurements.yaml and sample_info.json, and \
+DIR/dataset_properties.yaml (types, rejections by reason, time).
+
+Sample i depends on (S, i) alone: the same with any --jobs and in any shard. Designs failing the \
+reference's filters are drawn again (up to 100 times). A rerun into DIR skips finished samples.
+
+With --replay INDEX[:ATTEMPT], rebuild one sample, or one attempt of it (also a rejected one), into \
+DIR as `build` would (drawings included), and print the filters' verdict.";
+
+const SERVE_ABOUT: &str = "\
+The web configurator: a page with a control for every design parameter, the body measurements and \
+the pattern drawn live, plus its JSON API (GET /api/schema, POST /api/pattern, ...; see README). \
+Listens on loopback unless --host says otherwise; --port 0 picks a free port. Prints the page's \
+address. Ctrl-C stops it after the requests in progress.";
+
+/// Drawing layout.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LayoutArg {
+    /// Panels where the reference draws them, as on the body.
+    Placed,
+    /// Panels side by side without overlap, in rows at most 150 cm wide, to print and cut from.
+    Flat,
+}
+
+impl From<LayoutArg> for garmentcode::draw::Layout {
+    fn from(l: LayoutArg) -> Self {
+        match l {
+            LayoutArg::Placed => garmentcode::draw::Layout::Placed,
+            LayoutArg::Flat => garmentcode::draw::Layout::Flat,
+        }
+    }
+}
+
+/// `garmentcode build`.
+#[derive(Args, Debug)]
+pub struct BuildArgs {
+    /// Design: a design file (.yaml) or a built-in design (t-shirt, fitted-dress, sundress, shirt-dress, jumpsuit).
+    #[arg(short, long, value_name = "FILE.yaml|NAME", default_value = garments::builtin::DEFAULT_DESIGN)]
+    pub design: String,
+    /// Body: a body file (.yaml) or a built-in body (mean_all, mean_female, mean_male, f_smpl_average_A40, m_smpl_average_A40).
+    #[arg(short, long, value_name = "NAME|FILE.yaml", default_value = garments::builtin::DEFAULT_BODY)]
+    pub body: String,
+    /// Output folder.
+    #[arg(short, long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// Pattern name written into the specification (default: the design's name).
+    #[arg(short, long)]
+    pub name: Option<String>,
+    /// Reject a design that fails one of the reference's checks (exit 1, nothing written).
+    #[arg(long)]
+    pub strict: bool,
+    /// Do not draw pattern.png.
+    #[arg(long)]
+    pub no_png: bool,
+    /// Drawing layout.
+    #[arg(short, long, value_enum, default_value_t = LayoutArg::Placed)]
+    pub layout: LayoutArg,
+    /// Replace an output folder that holds files garmentcode did not write.
+    #[arg(short, long)]
+    pub force: bool,
+}
+
+/// Formats of `schema`.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SchemaFormat {
+    /// A design file in the reference's layout with every parameter at its default (it builds).
+    ReferenceYaml,
+    /// A JSON Schema of design files.
+    JsonSchema,
+    /// One line per parameter.
+    Table,
+}
+
+/// `garmentcode schema`.
+#[derive(Args, Debug)]
+pub struct SchemaArgs {
+    /// Output format.
+    #[arg(short, long, value_enum, default_value_t = SchemaFormat::ReferenceYaml)]
+    pub format: SchemaFormat,
+}
+
+/// Formats of `check`.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CheckFormat {
+    /// One line per problem and a summary.
+    Text,
+    /// A JSON report.
+    Json,
+}
+
+/// `garmentcode check`.
+#[derive(Args, Debug)]
+pub struct CheckArgs {
+    /// The pattern (specification.json).
+    #[arg(value_name = "SPEC.json")]
+    pub file: String,
+    /// Also exit 1 on the warnings `build --strict` rejects (self-intersections).
+    #[arg(long)]
+    pub strict: bool,
+    /// Output format.
+    #[arg(short, long, value_enum, default_value_t = CheckFormat::Text)]
+    pub format: CheckFormat,
+}
+
+/// `garmentcode render`.
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    /// The pattern (specification.json).
+    #[arg(value_name = "SPEC.json")]
+    pub file: String,
+    /// Output folder.
+    #[arg(short, long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// Do not draw pattern.png.
+    #[arg(long)]
+    pub no_png: bool,
+    /// Drawing layout.
+    #[arg(short, long, value_enum, default_value_t = LayoutArg::Placed)]
+    pub layout: LayoutArg,
+    /// Draw a pattern with structural errors anyway, and replace an output folder
+    /// that holds files garmentcode did not write.
+    #[arg(short, long)]
+    pub force: bool,
+}
+
+/// `garmentcode compare`.
+#[derive(Args, Debug)]
+pub struct CompareArgs {
+    /// The expected pattern (or case folder with --cases).
+    #[arg(value_name = "EXPECTED")]
+    pub expected: PathBuf,
+    /// The pattern to judge (or case folder with --cases).
+    #[arg(value_name = "ACTUAL")]
+    pub actual: PathBuf,
+    /// Compare every case folder of EXPECTED with the same folder in ACTUAL.
+    #[arg(long)]
+    pub cases: bool,
+    /// Tolerance in cm.
+    #[arg(short, long, value_name = "CM", default_value_t = 0.05, value_parser = positive_cm)]
+    pub tol: f64,
+    /// Fail on any difference the tolerance does not cover (also vertex counts).
+    #[arg(long)]
+    pub strict: bool,
+    /// Compare sleeve, cuff and hood panels point by point too.
+    #[arg(long)]
+    pub no_chaotic_rule: bool,
+    /// Every difference and note, not only the first three.
+    #[arg(short, long)]
+    pub verbose: bool,
+}
+
+fn positive_cm(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
+        _ => Err(format!("expects a positive number of cm, got '{s}'")),
+    }
+}
+
+/// `garmentcode sample`.
+#[derive(Args, Debug)]
+pub struct SampleArgs {
+    /// Number of samples (not with --replay).
+    #[arg(short, long = "n", value_name = "N", required_unless_present = "replay", value_parser = clap::value_parser!(u64).range(1..))]
+    pub n: Option<u64>,
+    /// Seed: any whole number from 0 to 2^64-1.
+    #[arg(short, long, value_name = "S")]
+    pub seed: u64,
+    /// Output folder.
+    #[arg(short, long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// A design file whose ranges and probabilities replace the built-in ones.
+    #[arg(long, value_name = "FILE.yaml")]
+    pub design_space: Option<String>,
+    /// Built-in body names or body files separated by commas, or a folder of body files (default mean_all).
+    #[arg(long, value_name = "NAME,NAME|DIR")]
+    pub bodies: Option<String>,
+    /// Threads (default: all cores).
+    #[arg(short, long, value_name = "J", value_parser = clap::value_parser!(u64).range(1..))]
+    pub jobs: Option<u64>,
+    /// Only the samples i with i % K == I (0 <= I < K).
+    #[arg(long, value_name = "I/K")]
+    pub shard: Option<String>,
+    /// Files per sample: a list of json, svg, png (default json; with --replay all three).
+    #[arg(short, long, value_name = "LIST")]
+    pub formats: Option<String>,
+    /// Rebuild one sample, or one attempt of it, into DIR as `build` would.
+    #[arg(short, long, value_name = "INDEX[:ATTEMPT]")]
+    pub replay: Option<String>,
+}
+
+/// `garmentcode serve`.
+#[derive(Args, Debug)]
+pub struct ServeArgs {
+    /// Port (0 picks a free one).
+    #[arg(short, long, default_value_t = 8000)]
+    pub port: u16,
+    /// Address to listen on: loopback by default; 0.0.0.0 makes the configurator reachable from other machines.
+    #[arg(long, default_value = "127.0.0.1")]
+    pub host: String,
+}
+
+/// `garmentcode completions`.
+#[derive(Args, Debug)]
+pub struct CompletionsArgs {
+    /// The shell.
+    #[arg(value_enum)]
+    pub shell: clap_complete::Shell,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn definitions_are_consistent() {
+        Cli::command().debug_assert();
+    }
+}

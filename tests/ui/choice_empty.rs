@@ -1,0 +1,6 @@
+use garmentcode::Choice;
+
+#[derive(Clone, Copy, Choice)]
+enum Hem {}
+
+fn main() {}

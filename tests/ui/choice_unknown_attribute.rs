@@ -1,0 +1,9 @@
+use garmentcode::Choice;
+
+#[derive(Clone, Copy, Choice)]
+enum Hem {
+    #[param(label = "plain")]
+    Plain,
+}
+
+fn main() {}

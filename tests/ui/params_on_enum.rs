@@ -1,0 +1,9 @@
+use garmentcode::Params;
+
+#[derive(Clone, Params)]
+enum Hem {
+    Plain,
+    Rolled,
+}
+
+fn main() {}

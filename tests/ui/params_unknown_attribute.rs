@@ -1,0 +1,9 @@
+use garmentcode::Params;
+
+#[derive(Clone, Params)]
+struct Skirt {
+    #[param(range = 0.1..=0.9, default = 0.5, step = 0.1)]
+    length: f64,
+}
+
+fn main() {}
