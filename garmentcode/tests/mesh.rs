@@ -12,7 +12,8 @@
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
-use garmentcode::mesh::{BoxMesh, DEFAULT_RESOLUTION, MeshError, PanelMesh, SIZE_BOUND, VertexLabel, read_obj, read_segmentation};
+use garmentcode::mesh::write::{read_obj, read_segmentation};
+use garmentcode::mesh::{BoxMesh, DEFAULT_RESOLUTION, MeshError, PanelMesh, SIZE_BOUND, VertexLabel};
 use garmentcode::Curvature;
 use garmentcode::{Pattern, Vec2, Vec3};
 use serde_json::Value;

@@ -41,7 +41,7 @@
 
 mod curve;
 mod triangulate;
-mod write;
+pub mod write;
 
 use std::collections::HashMap;
 
@@ -49,7 +49,6 @@ use thiserror::Error;
 
 pub use curve::MeshCurve;
 pub use triangulate::SIZE_BOUND;
-pub use write::{read_obj, read_segmentation};
 
 use crate::{Vec2, Vec3};
 use crate::{PanelSpec, Pattern, panel_order};

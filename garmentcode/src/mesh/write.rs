@@ -166,29 +166,38 @@ impl BoxMesh {
         out
     }
 
-    /// Writes the reference's files (OBJ, material, segmentation, rest lengths, vertex
-    /// labels) and the welded metre OBJ and PLY into `dir`; returns the paths written.
+    /// The files, named `<name><suffix>` (suffixes in [`FILE_SUFFIXES`]): the reference's
+    /// (OBJ, material, segmentation, rest lengths, vertex labels), the welded metre OBJ and the PLY.
+    pub fn files(&self) -> Vec<(String, Vec<u8>)> {
+        let name = self.file_prefix();
+        let bytes = [
+            self.obj().into_bytes(),
+            self.material().into_bytes(),
+            self.segmentation().into_bytes(),
+            self.rest_lengths_pickle(),
+            self.vertex_labels_yaml().into_bytes(),
+            self.welded_obj_metres().into_bytes(),
+            self.ply().into_bytes(),
+        ];
+        FILE_SUFFIXES.iter().zip(bytes).map(|(suffix, b)| (format!("{name}{suffix}"), b)).collect()
+    }
+
+    /// Writes [`BoxMesh::files`] into `dir`; returns the paths written.
     pub fn write_files(&self, dir: &Path) -> io::Result<Vec<PathBuf>> {
         std::fs::create_dir_all(dir)?;
-        let name = self.file_prefix();
-        let files: [(&str, Vec<u8>); 7] = [
-            ("_boxmesh.obj", self.obj().into_bytes()),
-            ("_material.mtl", self.material().into_bytes()),
-            ("_sim_segmentation.txt", self.segmentation().into_bytes()),
-            ("_orig_lens.pickle", self.rest_lengths_pickle()),
-            ("_vertex_labels.yaml", self.vertex_labels_yaml().into_bytes()),
-            ("_sim_mesh.obj", self.welded_obj_metres().into_bytes()),
-            ("_boxmesh.ply", self.ply().into_bytes()),
-        ];
-        let mut written = Vec::with_capacity(files.len());
-        for (suffix, bytes) in files {
-            let path = dir.join(format!("{name}{suffix}"));
+        let mut written = Vec::new();
+        for (name, bytes) in self.files() {
+            let path = dir.join(name);
             std::fs::write(&path, bytes)?;
             written.push(path);
         }
         Ok(written)
     }
 }
+
+/// Suffixes of the files [`BoxMesh::files`] writes, after the pattern's name.
+pub const FILE_SUFFIXES: [&str; 7] =
+    ["_boxmesh.obj", "_material.mtl", "_sim_segmentation.txt", "_orig_lens.pickle", "_vertex_labels.yaml", "_sim_mesh.obj", "_boxmesh.ply"];
 
 fn push_xyz(out: &mut String, v: Vec3) {
     write_python_float(out, v.x);
