@@ -12,9 +12,9 @@
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
+use garmentcode::Curvature;
 use garmentcode::mesh::write::{read_obj, read_segmentation};
 use garmentcode::mesh::{BoxMesh, DEFAULT_RESOLUTION, MeshError, PanelMesh, SIZE_BOUND, VertexLabel};
-use garmentcode::Curvature;
 use garmentcode::{Pattern, Vec2, Vec3};
 use serde_json::Value;
 
@@ -261,8 +261,11 @@ fn reference_mesh_cases_match() {
 #[test]
 fn every_reference_pattern_meshes_with_valid_properties() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data/cases");
-    let mut specs: Vec<PathBuf> =
-        std::fs::read_dir(dir).expect("cases").map(|e| e.expect("entry").path().join("specification.json")).filter(|p| p.exists()).collect();
+    let mut specs: Vec<PathBuf> = std::fs::read_dir(dir)
+        .expect("cases")
+        .map(|e| e.expect("entry").path().join("specification.json"))
+        .filter(|p| p.exists())
+        .collect();
     specs.sort();
     assert!(specs.len() >= 50);
     let mut report = Vec::new();
@@ -385,7 +388,8 @@ fn small_files_snapshot() {
         }
     }
     let seg: String = runs.iter().map(|(l, n)| format!("{l} x{n}\n")).collect();
-    let panels: String = mesh.panels.iter().map(|p| format!("{}: {} stitch-side, {} boundary\n", p.name, p.n_stitch_side, p.n_boundary)).collect();
+    let panels: String =
+        mesh.panels.iter().map(|p| format!("{}: {} stitch-side, {} boundary\n", p.name, p.n_stitch_side, p.n_boundary)).collect();
     insta::assert_snapshot!(
         "box_mesh_case_001",
         format!("{}\n--- stitch block\n{seg}--- panels\n{panels}--- vertex labels\n{}", mesh.material(), mesh.vertex_labels_yaml())

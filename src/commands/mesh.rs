@@ -17,7 +17,8 @@ fn prefix(file: &str) -> String {
         return name.to_string();
     }
     if stem == "specification" {
-        let folder = std::fs::canonicalize(path).ok().and_then(|p| p.parent().and_then(|d| d.file_name()).map(|n| n.to_string_lossy().into_owned()));
+        let folder =
+            std::fs::canonicalize(path).ok().and_then(|p| p.parent().and_then(|d| d.file_name()).map(|n| n.to_string_lossy().into_owned()));
         if let Some(folder) = folder {
             return folder;
         }

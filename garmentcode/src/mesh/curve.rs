@@ -205,8 +205,10 @@ fn arc(s: Vec2, e: Vec2, r: f64, large_arc: bool, sweep: bool) -> MeshCurve {
 
 /// 10-point Gauss–Legendre quadrature of `f` over `[a, b]`.
 fn gauss(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
-    const X: [f64; 5] = [0.148_874_338_981_631_2, 0.433_395_394_129_247_2, 0.679_409_568_299_024_4, 0.865_063_366_688_984_5, 0.973_906_528_517_171_7];
-    const W: [f64; 5] = [0.295_524_224_714_752_9, 0.269_266_719_309_996_4, 0.219_086_362_515_982_04, 0.149_451_349_150_580_6, 0.066_671_344_308_688_14];
+    const X: [f64; 5] =
+        [0.148_874_338_981_631_2, 0.433_395_394_129_247_2, 0.679_409_568_299_024_4, 0.865_063_366_688_984_5, 0.973_906_528_517_171_7];
+    const W: [f64; 5] =
+        [0.295_524_224_714_752_9, 0.269_266_719_309_996_4, 0.219_086_362_515_982_04, 0.149_451_349_150_580_6, 0.066_671_344_308_688_14];
     let (m, h) = ((a + b) / 2.0, (b - a) / 2.0);
     h * X.iter().zip(W).map(|(x, w)| w * (f(m - h * x) + f(m + h * x))).sum::<f64>()
 }
@@ -244,7 +246,10 @@ mod tests {
         let mut prev = 0.0;
         for p in &s[1..8] {
             // Find t of p by dense search, then its arc length.
-            let t = (0..=10_000).map(|i| i as f64 / 1e4).min_by(|a, b| (c.point(*a) - *p).length().total_cmp(&(c.point(*b) - *p).length())).unwrap();
+            let t = (0..=10_000)
+                .map(|i| i as f64 / 1e4)
+                .min_by(|a, b| (c.point(*a) - *p).length().total_cmp(&(c.point(*b) - *p).length()))
+                .unwrap();
             let l = c.length_between(0.0, t);
             assert!((l - prev - total / 8.0).abs() < 1e-2, "{l} {prev}");
             prev = l;

@@ -50,8 +50,8 @@ use thiserror::Error;
 pub use curve::MeshCurve;
 pub use triangulate::SIZE_BOUND;
 
-use crate::{Vec2, Vec3};
 use crate::{PanelSpec, Pattern, panel_order};
+use crate::{Vec2, Vec3};
 
 /// The reference simulator's default resolution (`sim.config.resolution_scale`), cm.
 pub const DEFAULT_RESOLUTION: f64 = 1.0;
@@ -622,7 +622,8 @@ fn outline_orientation(p: &PanelSpec, samples: &[Vec<Vec2>]) -> Result<bool, Mes
     if outline.len() < 3 {
         return Err(bad("fewer than three outline points"));
     }
-    let (lo, hi) = outline.iter().fold((Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY)), |(lo, hi), q| (lo.min(*q), hi.max(*q)));
+    let (lo, hi) =
+        outline.iter().fold((Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY)), |(lo, hi), q| (lo.min(*q), hi.max(*q)));
     let mut on_box: Vec<Vec2> = outline.iter().copied().filter(|q| q.x == lo.x || q.x == hi.x || q.y == lo.y || q.y == hi.y).collect();
     if on_box.len() < 2 {
         return Err(bad("the outline's bounding box is touched by fewer than two points"));

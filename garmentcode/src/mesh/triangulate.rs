@@ -112,8 +112,11 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) 
                 used[v.fix().index()] = true;
             }
         }
-        let interior: Vec<Point2<f64>> =
-            cdt.vertices().filter(|v| used[v.fix().index()] && !is_input[v.fix().index()] && !on_outline(*v)).map(|v| v.position()).collect();
+        let interior: Vec<Point2<f64>> = cdt
+            .vertices()
+            .filter(|v| used[v.fix().index()] && !is_input[v.fix().index()] && !on_outline(*v))
+            .map(|v| v.position())
+            .collect();
         let distinct = handle.iter().enumerate().all(|(i, h)| h.index() == i);
         if crossing.is_empty() && distinct {
             // Outline without crossings or repeated points: bulk loading keeps the vertex order.

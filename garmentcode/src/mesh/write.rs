@@ -6,8 +6,8 @@ use std::io;
 use std::path::{Path, PathBuf};
 
 use super::{BoxMesh, VertexLabel};
-use crate::{Vec2, Vec3};
 use crate::parity::float_repr::write_python_float;
+use crate::{Vec2, Vec3};
 
 /// Padding between texture islands (cm), as the reference lays them out.
 const UV_PADDING: f64 = 3.0;
@@ -226,7 +226,8 @@ pub fn read_obj(text: &str) -> Result<(Vec<Vec3>, Vec<[usize; 3]>), String> {
         let mut it = line.split_whitespace();
         match it.next() {
             Some("v") => {
-                let c: Vec<f64> = it.take(3).map(|x| x.parse::<f64>().map_err(|e| format!("line {}: {e}", n + 1))).collect::<Result<_, _>>()?;
+                let c: Vec<f64> =
+                    it.take(3).map(|x| x.parse::<f64>().map_err(|e| format!("line {}: {e}", n + 1))).collect::<Result<_, _>>()?;
                 if c.len() != 3 {
                     return Err(format!("line {}: a vertex needs three coordinates", n + 1));
                 }
