@@ -13,3 +13,9 @@ pub fn explain_warning(w: &str) -> String {
         None => w.to_string(),
     }
 }
+
+/// The README's code blocks, compiled and run by `cargo test` as doc tests (blocks
+/// tagged `sh`, `text` and the like are not Rust and are skipped).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

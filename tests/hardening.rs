@@ -163,6 +163,26 @@ fn absurd_numbers_in_a_specification_are_refused() {
             }),
         ),
         ("units_in_meter", edit(&|v| v["properties"]["units_in_meter"] = serde_json::json!(1e-300))),
+        (
+            "at most 500 are accepted",
+            edit(&|v| {
+                let mut p = first_panel(v);
+                let e = p["edges"][0].clone();
+                p["edges"] = serde_json::Value::Array(vec![e; 501]);
+                set_panel(v, p);
+            }),
+        ),
+        (
+            "edges in all: at most 5000 are accepted",
+            edit(&|v| {
+                let mut p = first_panel(v);
+                let e = p["edges"][0].clone();
+                p["edges"] = serde_json::Value::Array(vec![e; 500]);
+                for k in 0..11 {
+                    v["pattern"]["panels"][format!("copy_{k}")] = p.clone();
+                }
+            }),
+        ),
     ];
     for (expect, text) in cases {
         let e = within(FAST, "parse", || Pattern::from_json(&text)).unwrap_err().to_string();

@@ -7,6 +7,12 @@
 //! re-export `::garmentcode::__private`, so authors depend on `garmentcode` alone.
 //! On an error the macro emits the error plus a minimal impl, so one mistake does not
 //! cascade into unrelated errors.
+//!
+//! The macros are used through their re-exports in `garmentcode`, whose docs have
+//! a runnable example of each: [`garmentcode::Params`](../garmentcode/derive.Params.html),
+//! [`garmentcode::Choice`](../garmentcode/derive.Choice.html),
+//! [`garmentcode::Component`](../garmentcode/derive.Component.html) and
+//! [`garmentcode::component`](../garmentcode/attr.component.html).
 
 mod expand;
 mod internals;
@@ -102,6 +108,9 @@ use syn::{DeriveInput, parse_macro_input};
 /// assert!(space.params().iter().all(|p| p.path != "left.cuff.flare"));
 /// assert_eq!(space.params().len(), 8 - 1);
 /// ```
+///
+/// Implements the trait `garmentcode::Params`. A shorter example:
+/// [`garmentcode::Params`](../garmentcode/derive.Params.html).
 #[proc_macro_derive(Params, attributes(param))]
 pub fn derive_params(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
@@ -110,6 +119,9 @@ pub fn derive_params(input: TokenStream) -> TokenStream {
 
 /// Categorical parameter: an enum of unit variants, each an option
 /// (`#[param(rename = "..")]` to change its name in design files).
+///
+/// Implements the trait `garmentcode::Choice`. Example:
+/// [`garmentcode::Choice`](../garmentcode/derive.Choice.html).
 #[proc_macro_derive(Choice, attributes(param))]
 pub fn derive_choice(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
@@ -117,7 +129,13 @@ pub fn derive_choice(input: TokenStream) -> TokenStream {
 }
 
 /// Garment component (or panel class): `#[part]` sub-parts in assembly order,
-/// `#[panel]` for a panel class, `#[interface]` fields, `#[stitches]`.
+/// `#[panel]` for a panel class, `#[interface]` fields, `#[stitches]`. On an enum
+/// of parts (one part per variant), `#[component(slots(Top, ..))]` lists the slots
+/// every variant fills.
+///
+/// Implements `garmentcode`'s part traits (`Part`, `Remap`, `Interfaces`, `Slot`, and
+/// `PanelPart` or `Component`). Example, struct and enum forms:
+/// [`garmentcode::Component`](../garmentcode/derive.Component.html).
 #[proc_macro_derive(Component, attributes(part, panel, interface, stitches, component))]
 pub fn derive_component(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
@@ -126,6 +144,8 @@ pub fn derive_component(input: TokenStream) -> TokenStream {
 
 /// `#[component]` on a struct: shorthand for `#[derive(Component)]`, with optional
 /// arguments `name = "..."` and `length = path::to_fn`.
+///
+/// Example: [`garmentcode::component`](../garmentcode/attr.component.html).
 #[proc_macro_attribute]
 pub fn component(args: TokenStream, item: TokenStream) -> TokenStream {
     let args = proc_macro2::TokenStream::from(args);

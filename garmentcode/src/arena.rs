@@ -24,10 +24,49 @@ pub struct VertexId(pub(crate) u32);
 pub struct EdgeId(pub(crate) u32);
 
 /// Identity of a panel.
+///
+/// Panels are made by the [`Arena`] and read and placed through their id:
+///
+/// ```
+/// use garmentcode::{Arena, EdgeSeq, Vec2, Vec3};
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 30.0), Vec2::new(20.0, 30.0), Vec2::new(20.0, 0.0)];
+/// let edges = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// let panel = a.panel_with_edges("front", edges);
+/// panel.translate_to(&mut a, Vec3::new(0.0, 100.0, 15.0));
+/// assert_eq!(panel.name(&a), "front");
+/// assert_eq!(panel.translation(&a), Vec3::new(0.0, 100.0, 15.0));
+/// assert_eq!(panel.bbox(&a), (Vec2::ZERO, Vec2::new(20.0, 30.0)));
+/// // The panel as the pattern format writes it.
+/// let written = panel.assemble(&mut a)?;
+/// assert_eq!((written.name.as_str(), written.edges.len()), ("front", 4));
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct PanelId(pub(crate) u32);
 
 /// Identity of an interface.
+///
+/// An interface is a list of panel edges that can be stitched, made by the [`Arena`]:
+///
+/// ```
+/// use garmentcode::{Arena, EdgeSeq, Vec2};
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 30.0), Vec2::new(20.0, 30.0), Vec2::new(20.0, 0.0)];
+/// let edges = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// let panel = a.panel_with_edges("front", edges.clone());
+/// let side = a.interface(panel, edges[0]);
+/// let top = a.interface(panel, edges.slice(1, 3));
+/// assert_eq!((side.len(&a), side.length(&a)), (1, 30.0));
+/// assert_eq!((top.len(&a), top.length(&a)), (2, 50.0));
+/// // Interfaces concatenate, and the panel knows those made over its edges.
+/// let both = a.interface_from(&[side, top]);
+/// assert_eq!(both.panels(&a), [panel; 3]);
+/// assert_eq!(panel.interfaces(&a), [side, top]);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct InterfaceId(pub(crate) u32);
 
@@ -44,6 +83,23 @@ pub(crate) struct EdgeData {
 }
 
 /// An ordered list of edges.
+///
+/// ```
+/// use garmentcode::{Arena, EdgeSeq, Vec2};
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 10.0), Vec2::new(20.0, 10.0), Vec2::new(20.0, 0.0)];
+/// let outline = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// assert!(outline.is_loop(&a));
+/// assert_eq!((outline.len(), outline.length(&a)), (4, 60.0));
+/// // A slice is a new list over the same edges; `copy` copies the geometry.
+/// let top = outline.slice(1, 2);
+/// let moved = top.copy(&mut a);
+/// moved.translate_by(&mut a, Vec2::new(0.0, 5.0));
+/// assert_eq!(top.shortcut(&a), (Vec2::new(0.0, 10.0), Vec2::new(20.0, 10.0)));
+/// assert_eq!(moved.shortcut(&a), (Vec2::new(0.0, 15.0), Vec2::new(20.0, 15.0)));
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct EdgeSeq(pub Vec<EdgeId>);
 
@@ -81,6 +137,28 @@ impl<'a> IntoIterator for &'a EdgeSeq {
 }
 
 /// A stitch between two interfaces, matched edge for edge.
+///
+/// Making the rule splits edges so that both sides have matching edges:
+///
+/// ```
+/// use garmentcode::{Arena, EdgeSeq, StitchRule, Vec2};
+///
+/// let mut a = Arena::new();
+/// let square = |a: &mut Arena, name: &str| -> garmentcode::Result<_> {
+///     let corners = [Vec2::ZERO, Vec2::new(0.0, 20.0), Vec2::new(20.0, 20.0), Vec2::new(20.0, 0.0)];
+///     let edges = EdgeSeq::from_points(a, &corners, true)?;
+///     Ok((a.panel_with_edges(name, edges.clone()), edges))
+/// };
+/// let (front, f) = square(&mut a, "front")?;
+/// let (back, b) = square(&mut a, "back")?;
+/// let one_edge = a.interface(front, f[0]);
+/// let two_edges = a.interface(back, b.slice(0, 2));
+/// let rule = StitchRule::new(&mut a, one_edge, two_edges)?;
+/// assert!(rule.is_matching(&a));
+/// assert_eq!((one_edge.len(&a), two_edges.len(&a)), (2, 2));
+/// assert_eq!(front.edges(&a).len(), 5);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct StitchRule {
     /// First side.
@@ -132,6 +210,21 @@ pub(crate) struct PanelData {
 }
 
 /// Storage of one garment's geometry.
+///
+/// Edges hold vertex ids, so moving a vertex moves every edge that holds it:
+///
+/// ```
+/// use garmentcode::{Arena, Curve, Vec2};
+///
+/// let mut a = Arena::new();
+/// let (p, q, r) = (a.vertex(Vec2::ZERO), a.vertex(Vec2::new(3.0, 0.0)), a.vertex(Vec2::new(3.0, 4.0)));
+/// let e1 = a.edge(p, q, Curve::Line)?;
+/// let e2 = a.edge(q, r, Curve::Line)?;
+/// assert_eq!((a.edge_length(e1), a.edge_length(e2)), (3.0, 4.0));
+/// a.set_pos(q, Vec2::new(0.0, 4.0));
+/// assert_eq!((a.edge_length(e1), a.edge_length(e2)), (4.0, 3.0));
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 #[derive(Clone, Debug)]
 pub struct Arena {
     pub(crate) verts: Vec<Vec2>,

@@ -103,6 +103,47 @@ impl Slot for Option<f64> {
 macro_rules! measurements {
     ($( $name:ident : $ty:ty = $unit:literal [$min:literal, $max:literal] $desc:literal; )*) => {
         /// The measurements of one body, in centimetres and degrees.
+        ///
+        /// Read from a body file; garment programs use the fields and [`Body::derived`]:
+        ///
+        /// ```
+        /// use garmentcode::Body;
+        ///
+        /// # const OTHERS: &str = concat!(
+        /// #     "  waist_over_bust_line: 40.56\n",
+        /// #     "  bust_line: 25.69\n",
+        /// #     "  vert_bust_line: 21.14\n",
+        /// #     "  hips_line: 23.48\n",
+        /// #     "  crotch_hip_diff: 8.81\n",
+        /// #     "  armscye_depth: 12.87\n",
+        /// #     "  arm_length: 53.97\n",
+        /// #     "  bust: 99.84\n",
+        /// #     "  underbust: 86.25\n",
+        /// #     "  waist: 84.33\n",
+        /// #     "  hips: 103.48\n",
+        /// #     "  leg_circ: 60.2\n",
+        /// #     "  wrist: 16.59\n",
+        /// #     "  neck_w: 18.93\n",
+        /// #     "  shoulder_w: 36.46\n",
+        /// #     "  back_width: 47.68\n",
+        /// #     "  waist_back_width: 39.14\n",
+        /// #     "  hip_back_width: 54.82\n",
+        /// #     "  bust_points: 16.95\n",
+        /// #     "  bum_points: 18.23\n",
+        /// #     "  shoulder_incl: 21.68\n",
+        /// #     "  hip_inclination: 9.86\n",
+        /// #     "  arm_pose_angle: 45.48\n",
+        /// # );
+        /// // A body file lists every measurement (most of them left out here).
+        /// let text = format!("body:\n  height: 172.0\n  head_l: 26.0\n  waist_line: 37.0\n{OTHERS}");
+        /// let body = Body::from_yaml(&text, "body.yaml").unwrap();
+        /// assert_eq!(body.height, 172.0);
+        /// assert_eq!(body.derived().waist_level, 172.0 - 26.0 - 37.0);
+        /// assert_eq!(body.get("waist"), Some(84.33));
+        /// // Every measurement is checked.
+        /// let short = Body::from_yaml("body:\n  height: 172.0\n", "short.yaml").unwrap_err();
+        /// assert!(short.to_string().contains("body.waist: missing measurement"));
+        /// ```
         #[derive(Clone, Debug, PartialEq)]
         pub struct Body {
             $(

@@ -26,6 +26,36 @@ pub enum Node<'a> {
 }
 
 /// Something placeable and assemblable: a panel, a panel class or a component.
+///
+/// Implemented by `#[derive(Component)]`; [`PartExt`] adds the methods:
+///
+/// ```
+/// use garmentcode::{Node, Part};
+/// # use garmentcode::{Arena, EdgeSeq, InterfaceId, PanelId, Vec2};
+/// # /// A rectangle `width` wide and 10 high, with `top` and `side` interfaces.
+/// # #[derive(garmentcode::Component)]
+/// # struct Band {
+/// #     #[panel]
+/// #     panel: PanelId,
+/// #     #[interface]
+/// #     top: InterfaceId,
+/// #     #[interface]
+/// #     side: InterfaceId,
+/// # }
+/// # impl Band {
+/// #     fn new(a: &mut Arena, name: &str, width: f64) -> garmentcode::Result<Band> {
+/// #         let corners = [Vec2::ZERO, Vec2::new(0.0, 10.0), Vec2::new(width, 10.0), Vec2::new(width, 0.0)];
+/// #         let edges = EdgeSeq::from_points(a, &corners, true)?;
+/// #         let panel = a.panel_with_edges(name, edges.clone());
+/// #         Ok(Band { panel, side: a.interface(panel, edges[0]), top: a.interface(panel, edges[1]) })
+/// #     }
+/// # }
+///
+/// let mut a = Arena::new();
+/// let band = Band::new(&mut a, "band", 20.0)?;
+/// assert!(matches!(band.node(), Node::Panel(p) if p == band.panel));
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 #[diagnostic::on_unimplemented(
     message = "`{Self}` is not a garment part",
     label = "not a panel, panel class or component",
@@ -56,6 +86,39 @@ impl<T: Part + ?Sized> Part for Box<T> {
 
 /// A part that is one panel: a [`PanelId`], or a panel class (a struct with a
 /// `#[panel]` field, for which `#[derive(Component)]` implements this trait).
+///
+/// ```
+/// use garmentcode::PanelPart;
+/// # use garmentcode::{Arena, EdgeSeq, InterfaceId, PanelId, Vec2};
+/// # /// A rectangle `width` wide and 10 high, with `top` and `side` interfaces.
+/// # #[derive(garmentcode::Component)]
+/// # struct Band {
+/// #     #[panel]
+/// #     panel: PanelId,
+/// #     #[interface]
+/// #     top: InterfaceId,
+/// #     #[interface]
+/// #     side: InterfaceId,
+/// # }
+/// # impl Band {
+/// #     fn new(a: &mut Arena, name: &str, width: f64) -> garmentcode::Result<Band> {
+/// #         let corners = [Vec2::ZERO, Vec2::new(0.0, 10.0), Vec2::new(width, 10.0), Vec2::new(width, 0.0)];
+/// #         let edges = EdgeSeq::from_points(a, &corners, true)?;
+/// #         let panel = a.panel_with_edges(name, edges.clone());
+/// #         Ok(Band { panel, side: a.interface(panel, edges[0]), top: a.interface(panel, edges[1]) })
+/// #     }
+/// # }
+///
+/// fn panel_name<P: PanelPart>(part: &P, a: &Arena) -> String {
+///     part.panel_id().name(a).to_string()
+/// }
+///
+/// let mut a = Arena::new();
+/// let band = Band::new(&mut a, "band", 20.0)?;
+/// assert_eq!(panel_name(&band, &a), "band");
+/// assert_eq!(panel_name(&band.panel, &a), "band");
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 pub trait PanelPart: Part {
     /// The panel.
     fn panel_id(&self) -> PanelId;
@@ -68,6 +131,53 @@ impl PanelPart for PanelId {
 }
 
 /// A garment component: an ordered set of sub-parts plus the stitches between them.
+///
+/// Implemented by `#[derive(Component)]` on a struct with `#[part]` fields:
+///
+/// ```
+/// use garmentcode::{Component, PartExt, StitchRule};
+/// # use garmentcode::{Arena, EdgeSeq, InterfaceId, PanelId, Vec2};
+/// # /// A rectangle `width` wide and 10 high, with `top` and `side` interfaces.
+/// # #[derive(garmentcode::Component)]
+/// # struct Band {
+/// #     #[panel]
+/// #     panel: PanelId,
+/// #     #[interface]
+/// #     top: InterfaceId,
+/// #     #[interface]
+/// #     side: InterfaceId,
+/// # }
+/// # impl Band {
+/// #     fn new(a: &mut Arena, name: &str, width: f64) -> garmentcode::Result<Band> {
+/// #         let corners = [Vec2::ZERO, Vec2::new(0.0, 10.0), Vec2::new(width, 10.0), Vec2::new(width, 0.0)];
+/// #         let edges = EdgeSeq::from_points(a, &corners, true)?;
+/// #         let panel = a.panel_with_edges(name, edges.clone());
+/// #         Ok(Band { panel, side: a.interface(panel, edges[0]), top: a.interface(panel, edges[1]) })
+/// #     }
+/// # }
+///
+/// #[derive(Component)]
+/// #[component(name = "belt")]
+/// struct Belt {
+///     #[part]
+///     front: Band,
+///     #[part]
+///     back: Band,
+///     #[stitches]
+///     seams: Vec<StitchRule>,
+/// }
+///
+/// let mut a = Arena::new();
+/// let (front, back) = (Band::new(&mut a, "front", 40.0)?, Band::new(&mut a, "back", 40.0)?);
+/// let seams = vec![StitchRule::new(&mut a, front.side, back.side)?];
+/// let belt = Belt { front, back, seams };
+/// assert_eq!((belt.name(), belt.stitches().len()), ("belt".to_string(), 1));
+/// let mut parts = 0;
+/// belt.for_each_part(&mut |_| parts += 1);
+/// assert_eq!(parts, 2);
+/// assert_eq!(belt.panel_ids(), [belt.front.panel, belt.back.panel]);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 #[diagnostic::on_unimplemented(
     message = "`{Self}` is not a component",
     label = "no `#[derive(Component)]` with `#[part]` fields",
@@ -112,6 +222,44 @@ impl Interfaces for PanelId {
 /// own): it exposes the interface that slot connects through. Requiring
 /// `Slot<Top>` of a bottom garment makes plugging in a component without a `top`
 /// interface a compile error.
+///
+/// `#[derive(Component)]` implements it for every `#[interface]` field named like a
+/// slot marker (`top` fills [`slots::Top`](crate::slots::Top)):
+///
+/// ```
+/// use garmentcode::slots::Top;
+/// use garmentcode::{Slot, SlotExt};
+/// # use garmentcode::{Arena, EdgeSeq, InterfaceId, PanelId, Vec2};
+/// # /// A rectangle `width` wide and 10 high, with `top` and `side` interfaces.
+/// # #[derive(garmentcode::Component)]
+/// # struct Band {
+/// #     #[panel]
+/// #     panel: PanelId,
+/// #     #[interface]
+/// #     top: InterfaceId,
+/// #     #[interface]
+/// #     side: InterfaceId,
+/// # }
+/// # impl Band {
+/// #     fn new(a: &mut Arena, name: &str, width: f64) -> garmentcode::Result<Band> {
+/// #         let corners = [Vec2::ZERO, Vec2::new(0.0, 10.0), Vec2::new(width, 10.0), Vec2::new(width, 0.0)];
+/// #         let edges = EdgeSeq::from_points(a, &corners, true)?;
+/// #         let panel = a.panel_with_edges(name, edges.clone());
+/// #         Ok(Band { panel, side: a.interface(panel, edges[0]), top: a.interface(panel, edges[1]) })
+/// #     }
+/// # }
+///
+/// /// Anything with a `top` interface.
+/// fn waistline<B: Slot<Top>>(bottom: &B, a: &Arena) -> f64 {
+///     bottom.iface::<Top>().length(a)
+/// }
+///
+/// let mut a = Arena::new();
+/// let band = Band::new(&mut a, "band", 20.0)?;
+/// assert_eq!(waistline(&band, &a), 20.0);
+/// assert_eq!(Slot::<Top>::slot(&band), band.top);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 #[diagnostic::on_unimplemented(
     message = "`{Self}` does not expose the interface slot `{S}` needs",
     label = "no `#[interface]` for slot `{S}`",
@@ -317,6 +465,41 @@ impl Node<'_> {
 }
 
 /// Placement and assembly methods for every [`Part`].
+///
+/// ```
+/// use garmentcode::{PartExt, Vec3};
+/// # use garmentcode::{Arena, EdgeSeq, InterfaceId, PanelId, Vec2};
+/// # /// A rectangle `width` wide and 10 high, with `top` and `side` interfaces.
+/// # #[derive(garmentcode::Component)]
+/// # struct Band {
+/// #     #[panel]
+/// #     panel: PanelId,
+/// #     #[interface]
+/// #     top: InterfaceId,
+/// #     #[interface]
+/// #     side: InterfaceId,
+/// # }
+/// # impl Band {
+/// #     fn new(a: &mut Arena, name: &str, width: f64) -> garmentcode::Result<Band> {
+/// #         let corners = [Vec2::ZERO, Vec2::new(0.0, 10.0), Vec2::new(width, 10.0), Vec2::new(width, 0.0)];
+/// #         let edges = EdgeSeq::from_points(a, &corners, true)?;
+/// #         let panel = a.panel_with_edges(name, edges.clone());
+/// #         Ok(Band { panel, side: a.interface(panel, edges[0]), top: a.interface(panel, edges[1]) })
+/// #     }
+/// # }
+///
+/// let mut a = Arena::new();
+/// let band = Band::new(&mut a, "band", 20.0)?;
+/// band.translate_by(&mut a, Vec3::new(0.0, 100.0, 5.0));
+/// let (lo, hi) = band.bbox3d(&a);
+/// assert_eq!((lo.y, hi.y, lo.z), (100.0, 110.0, 5.0));
+/// // A deep copy is a `Band` with its own panel and interfaces.
+/// let copy = band.deep_copy(&mut a);
+/// assert!(copy.panel != band.panel && copy.top != band.top);
+/// let pattern = band.assemble(&mut a, "one band")?;
+/// assert_eq!(pattern.panels.len(), 1);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 pub trait PartExt: Part {
     /// See [`Node::translate_by`].
     fn translate_by(&self, a: &mut Arena, d: Vec3) -> &Self {

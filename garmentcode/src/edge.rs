@@ -11,6 +11,16 @@ use crate::bezier::Bezier;
 use crate::math::{Vec2, abs_to_rel, cabs, interior_params, norm, rel_to_abs, rotate2d};
 
 /// Shape of an edge between its end points, in the edge's relative frame.
+///
+/// ```
+/// use garmentcode::{Curve, Vec2};
+///
+/// let c = Curve::Cubic(Vec2::new(0.25, 0.3), Vec2::new(0.5, 0.1));
+/// assert_eq!(c.code(), 'C');
+/// assert_eq!(c.reversed(), Curve::Cubic(Vec2::new(0.5, -0.1), Vec2::new(0.75, -0.3)));
+/// assert_eq!(c.reversed().reversed(), c);
+/// assert_eq!(Curve::Arc { cy: 0.3 }.reflected(), Curve::Arc { cy: -0.3 });
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Curve {
     /// Straight segment.
@@ -62,6 +72,18 @@ impl Curve {
 }
 
 /// An edge's geometry.
+///
+/// ```
+/// use garmentcode::{Curve, Edge, Vec2};
+/// use std::f64::consts::PI;
+///
+/// let line = Edge::line(Vec2::ZERO, Vec2::new(2.0, 0.0));
+/// assert_eq!((line.length(), line.midpoint()), (2.0, Vec2::new(1.0, 0.0)));
+/// // A half circle: the arc's midpoint is half a chord to the left of the chord.
+/// let arc = Edge { curve: Curve::Arc { cy: 0.5 }, ..line };
+/// assert!((arc.length() - PI).abs() < 1e-6);
+/// assert!((arc.midpoint() - Vec2::new(1.0, 1.0)).length() < 1e-9);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Edge {
     /// Start vertex.

@@ -10,6 +10,19 @@ use thiserror::Error;
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 
 /// Everything that can go wrong while building or reading a pattern.
+///
+/// ```
+/// use garmentcode::ops::{DartSize, dart_shape};
+/// use garmentcode::{Arena, Error, Vec2};
+///
+/// let mut a = Arena::new();
+/// let err = a.line(Vec2::ZERO, Vec2::ZERO).unwrap_err();
+/// assert!(matches!(err, Error::DegenerateEdge { .. }));
+/// // Legs of 2 cm cannot span a 10 cm dart.
+/// let err = dart_shape(&mut a, 10.0, DartSize::Side(2.0)).unwrap_err();
+/// assert!(matches!(err, Error::Dart(_)));
+/// assert!(err.to_string().starts_with("dart shape: "));
+/// ```
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum Error {
     /// An edge whose start and end coincide (within 1e-4 cm).

@@ -32,6 +32,8 @@
 //! crate.
 
 #![warn(missing_docs)]
+// Doc examples compile without warnings (no unused imports or variables).
+#![doc(test(attr(deny(warnings))))]
 
 // Lets the derive macros' generated code name this crate as `::garmentcode` inside
 // the crate's own tests and examples too.
@@ -96,10 +98,155 @@ pub type Vec2 = glam::DVec2;
 /// 3D point or vector (world coordinates, centimetres).
 pub type Vec3 = glam::DVec3;
 
-/// Derive macros: `#[derive(Params)]`, `#[derive(Choice)]`, `#[derive(Component)]`
-/// and `#[component]`.
+/// A typed group of design parameters: the [`Params`](trait@Params) trait, with the
+/// schema, defaults and typed access generated from the fields.
+///
+/// ```
+/// use garmentcode::{Choice, Params};
+///
+/// /// How the hem is finished.
+/// #[derive(Clone, Copy, Debug, PartialEq, Choice)]
+/// enum Hem {
+///     Plain,
+///     Rolled,
+/// }
+///
+/// /// A skirt's design.
+/// #[derive(Clone, Debug, PartialEq, Params)]
+/// struct Skirt {
+///     /// Length as a fraction of the leg.
+///     #[param(range = 0.1..=0.95, default = 0.45)]
+///     length: f64,
+///     /// Number of panels.
+///     #[param(range = 3..=12, default = 6, prob = 0.4)]
+///     n_panels: i64,
+///     /// Hem finish.
+///     #[param(default = Plain)]
+///     hem: Hem,
+/// }
+///
+/// let skirt = Skirt::defaults();
+/// assert_eq!((skirt.length, skirt.n_panels, skirt.hem), (0.45, 6, Hem::Plain));
+/// let space = Skirt::design_space();
+/// assert_eq!(space.params().len(), 3);
+/// assert_eq!(space.get("n_panels").unwrap().default_prob, Some(0.4));
+/// assert_eq!(space.get("length").unwrap().description, "Length as a fraction of the leg.");
+/// ```
 #[cfg(feature = "derive")]
-pub use garmentcode_derive::{Choice, Component, Params, component};
+pub use garmentcode_derive::Params;
+
+/// A categorical parameter: the [`Choice`](trait@Choice) trait for an enum of unit
+/// variants, each an option.
+///
+/// ```
+/// use garmentcode::Choice;
+///
+/// #[derive(Clone, Copy, Debug, PartialEq, Choice)]
+/// enum Collar {
+///     Turtle,
+///     #[param(rename = "lapel-collar")]
+///     Lapel,
+/// }
+///
+/// assert_eq!(Collar::NAMES, ["Turtle", "lapel-collar"]);
+/// assert_eq!(Collar::from_name("lapel-collar"), Some(Collar::Lapel));
+/// assert_eq!(Collar::Turtle.name(), "Turtle");
+/// ```
+#[cfg(feature = "derive")]
+pub use garmentcode_derive::Choice;
+
+/// A garment part: a panel class (a struct with a `#[panel]` field), a
+/// component (`#[part]` fields, in assembly order) or an enum of parts, with
+/// `#[interface]` and `#[stitches]` fields. Implements [`Part`], [`Remap`],
+/// [`Interfaces`], [`Slot`] for interfaces named after a [`slots`] marker, and
+/// [`PanelPart`] or [`Component`](trait@Component).
+///
+/// ```
+/// use garmentcode::slots::Top;
+/// use garmentcode::{Arena, Component, EdgeSeq, InterfaceId, PanelId, PartExt, SlotExt, StitchRule, Vec2};
+///
+/// /// A panel class: one rectangle with its top edge as an interface.
+/// #[derive(Component)]
+/// struct Band {
+///     #[panel]
+///     panel: PanelId,
+///     #[interface]
+///     top: InterfaceId,
+///     #[interface]
+///     side: InterfaceId,
+/// }
+///
+/// impl Band {
+///     fn new(a: &mut Arena, name: &str, width: f64) -> garmentcode::Result<Band> {
+///         let corners = [Vec2::ZERO, Vec2::new(0.0, 10.0), Vec2::new(width, 10.0), Vec2::new(width, 0.0)];
+///         let edges = EdgeSeq::from_points(a, &corners, true)?;
+///         let panel = a.panel_with_edges(name, edges.clone());
+///         Ok(Band { panel, side: a.interface(panel, edges[0]), top: a.interface(panel, edges[1]) })
+///     }
+/// }
+///
+/// /// A component: two bands sewn side to side.
+/// #[derive(Component)]
+/// #[component(name = "skirt")]
+/// struct Skirt {
+///     #[part]
+///     bands: Vec<Band>,
+///     #[interface]
+///     top: InterfaceId,
+///     #[stitches]
+///     seams: Vec<StitchRule>,
+/// }
+///
+/// /// One of several parts that all have a `top`.
+/// #[derive(Component)]
+/// #[component(slots(Top))]
+/// enum Bottom {
+///     Band(Band),
+///     Skirt(Skirt),
+/// }
+///
+/// let mut a = Arena::new();
+/// let (front, back) = (Band::new(&mut a, "front", 40.0)?, Band::new(&mut a, "back", 40.0)?);
+/// let seams = vec![StitchRule::new(&mut a, front.side, back.side)?];
+/// let top = a.interface_from(&[front.top, back.top]);
+/// let skirt = Skirt { bands: vec![front, back], top, seams };
+/// assert_eq!(skirt.name(), "skirt");
+/// assert_eq!(skirt.panel_ids().len(), 2);
+///
+/// let bottom = Bottom::from(skirt);
+/// assert_eq!(bottom.iface::<Top>().length(&a), 80.0);
+/// let pattern = bottom.assemble(&mut a, "demo")?;
+/// assert_eq!((pattern.panels.len(), pattern.stitches.len()), (2, 1));
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
+#[cfg(feature = "derive")]
+pub use garmentcode_derive::Component;
+
+/// `#[component]` on a struct: shorthand for `#[derive(Component)]`, its arguments
+/// (`name = "..."`, `length = path::to_fn`) those of `#[component(..)]`.
+///
+/// ```
+/// use garmentcode::{Arena, EdgeSeq, InterfaceId, PanelId, PanelPart, Vec2, component};
+///
+/// #[component]
+/// struct Square {
+///     #[panel]
+///     panel: PanelId,
+///     #[interface]
+///     top: InterfaceId,
+/// }
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 5.0), Vec2::new(5.0, 5.0), Vec2::new(5.0, 0.0)];
+/// let edges = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// let panel = a.panel_with_edges("square", edges.clone());
+/// let square = Square { panel, top: a.interface(panel, edges[1]) };
+/// assert_eq!(square.panel_id(), panel);
+/// assert_eq!(square.top.length(&a), 5.0);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
+#[cfg(feature = "derive")]
+pub use garmentcode_derive::component;
 
 /// Paths used by the derive macros' generated code. Not a public API.
 #[doc(hidden)]

@@ -24,6 +24,18 @@ pub enum DartSize {
 
 /// The open triangle `(0,0) → (width/2, −depth) → (width, 0)`: a dart, slit or cut
 /// shape whose tip points to the right of its opening direction.
+///
+/// ```
+/// use garmentcode::ops::{DartSize, dart_shape};
+/// use garmentcode::{Arena, Vec2};
+///
+/// let mut a = Arena::new();
+/// let dart = dart_shape(&mut a, 4.0, DartSize::Depth(10.0))?;
+/// assert_eq!(dart.vert_positions(&a), [Vec2::ZERO, Vec2::new(2.0, -10.0), Vec2::new(4.0, 0.0)]);
+/// let by_side = dart_shape(&mut a, 6.0, DartSize::Side(5.0))?;
+/// assert_eq!(by_side.vert_positions(&a)[1], Vec2::new(3.0, -4.0));
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 pub fn dart_shape(a: &mut Arena, width: f64, size: DartSize) -> Result<EdgeSeq> {
     let depth = match size {
         DartSize::Depth(d) => d,
@@ -86,6 +98,26 @@ pub struct Cut {
 /// `offset` from its start, rotated so its opening lies along the edge and placed on
 /// the given `side` of the edge direction. The base edge itself is not changed;
 /// the caller substitutes [`Cut::edges`] for it where needed.
+///
+/// ```
+/// use garmentcode::ops::{DartSize, EdgeSide, cut_into_edge, dart_shape};
+/// use garmentcode::{Arena, EdgeSeq, Vec2};
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 20.0), Vec2::new(20.0, 20.0), Vec2::new(20.0, 0.0)];
+/// let edges = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// let panel = a.panel_with_edges("square", edges.clone());
+/// let dart = dart_shape(&mut a, 4.0, DartSize::Depth(5.0))?;
+/// // A dart in the middle of the bottom edge (20 cm from (20, 0) to (0, 0)), into the panel.
+/// let bottom = edges[3];
+/// let cut = cut_into_edge(&mut a, &dart, bottom, 10.0, EdgeSide::Right)?;
+/// assert_eq!((cut.leftovers.len(), cut.shape.len(), cut.edges.len()), (2, 2, 4));
+/// assert_eq!(cut.leftovers.length(&a), 16.0);
+/// assert_eq!(cut.shape.vert_positions(&a)[1], Vec2::new(10.0, 5.0));
+/// panel.edges_mut(&mut a).substitute(bottom, &cut.edges)?;
+/// assert!(panel.edges(&a).is_loop(&a));
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 pub fn cut_into_edge(a: &mut Arena, shape: &EdgeSeq, base: EdgeId, offset: f64, side: EdgeSide) -> Result<Cut> {
     let right = side == EdgeSide::Right;
     const TOL: f64 = 1e-2;
@@ -283,6 +315,27 @@ pub struct CornerCut {
 /// interface of the panel that used the corner edges now uses their remaining
 /// pieces; a new interface of the panel over the inserted shape is returned with
 /// the shape's edges.
+///
+/// ```
+/// use garmentcode::ops::cut_corner;
+/// use garmentcode::{Arena, EdgeSeq, Vec2};
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 20.0), Vec2::new(20.0, 20.0), Vec2::new(20.0, 0.0)];
+/// let edges = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// let panel = a.panel_with_edges("square", edges.clone());
+/// let top = a.interface(panel, edges[1]);
+/// // The top-left corner: the end of the left side and the start of the top.
+/// let corner = a.interface(panel, edges.slice(0, 2));
+/// let notch = EdgeSeq::from_points(&mut a, &[Vec2::ZERO, Vec2::new(3.0, 1.0), Vec2::new(4.0, 4.0)], false)?;
+/// let cut = cut_corner(&mut a, &notch, corner)?;
+/// assert_eq!((cut.shape.len(), panel.edges(&a).len()), (2, 6));
+/// assert_eq!(cut.interface.edges(&a), &cut.shape);
+/// // The top interface now holds what is left of the top edge.
+/// assert!(top.length(&a) < 20.0);
+/// assert!(panel.edges(&a).is_loop(&a));
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 pub fn cut_corner(a: &mut Arena, shape: &EdgeSeq, corner: InterfaceId) -> Result<CornerCut> {
     let mut corner_shape = shape.copy(a);
     let panel: PanelId = corner.panels(a)[0];
@@ -407,6 +460,22 @@ fn fit_location_on_corner(c1: &Segment, c2: &Segment, opening: Vec2) -> [f64; 2]
 /// Copies of a panel (or panel class) distributed around the world y axis: the
 /// original is renamed `<tag>_0`, copy `i` is copy `i−1` rotated by 360°/n about y.
 /// Each copy is the same type as the original, with its own interfaces.
+///
+/// ```
+/// use garmentcode::ops::distribute_y;
+/// use garmentcode::{Arena, EdgeSeq, Vec2, Vec3};
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 20.0), Vec2::new(20.0, 20.0), Vec2::new(20.0, 0.0)];
+/// let edges = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// let panel = a.panel_with_edges("square", edges.clone());
+/// panel.translate_to(&mut a, Vec3::new(0.0, 0.0, 30.0));
+/// let gores = distribute_y(&mut a, panel, 4, "gore");
+/// assert_eq!(gores.iter().map(|p| p.name(&a)).collect::<Vec<_>>(), ["gore_0", "gore_1", "gore_2", "gore_3"]);
+/// // A quarter turn each: the second gore sits on the +x side.
+/// assert!((gores[1].translation(&a) - Vec3::new(30.0, 0.0, 0.0)).length() < 1e-9);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 pub fn distribute_y<T: PanelPart + Remap>(a: &mut Arena, first: T, n: usize, tag: &str) -> Vec<T> {
     first.panel_id().set_name(a, &format!("{tag}_0"));
     let q = Rotation::from_euler_xyz_degrees([0.0, 360.0 / n as f64, 0.0]);

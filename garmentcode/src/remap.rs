@@ -48,6 +48,41 @@ fn find<T: PartialEq + Copy>(pairs: &[(T, T)], old: T) -> Option<T> {
 ///
 /// Implemented for the ids, edge sequences, stitches and their `Vec`, `Option` and
 /// `Box`; `#[derive(Component)]` implements it for components and panel classes.
+///
+/// ```
+/// use garmentcode::{Part, PartExt, Remap};
+/// # use garmentcode::{Arena, EdgeSeq, InterfaceId, PanelId, Vec2};
+/// # /// A rectangle `width` wide and 10 high, with `top` and `side` interfaces.
+/// # #[derive(garmentcode::Component)]
+/// # struct Band {
+/// #     #[panel]
+/// #     panel: PanelId,
+/// #     #[interface]
+/// #     top: InterfaceId,
+/// #     #[interface]
+/// #     side: InterfaceId,
+/// # }
+/// # impl Band {
+/// #     fn new(a: &mut Arena, name: &str, width: f64) -> garmentcode::Result<Band> {
+/// #         let corners = [Vec2::ZERO, Vec2::new(0.0, 10.0), Vec2::new(width, 10.0), Vec2::new(width, 0.0)];
+/// #         let edges = EdgeSeq::from_points(a, &corners, true)?;
+/// #         let panel = a.panel_with_edges(name, edges.clone());
+/// #         Ok(Band { panel, side: a.interface(panel, edges[0]), top: a.interface(panel, edges[1]) })
+/// #     }
+/// # }
+///
+/// let mut a = Arena::new();
+/// let band = Band::new(&mut a, "band", 20.0)?;
+/// fn twin<T: Part + Remap>(part: &T, a: &mut Arena) -> T {
+///     part.deep_copy(a)
+/// }
+/// let copy = twin(&band, &mut a);
+/// // The copy's interfaces lie on the copy's panel, at the same places.
+/// assert_eq!(copy.top.panels(&a), [copy.panel]);
+/// assert_eq!(copy.top.length(&a), band.top.length(&a));
+/// assert_eq!(copy.panel.interfaces(&a), [copy.side, copy.top]);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 #[diagnostic::on_unimplemented(
     message = "`{Self}` cannot be copied with its ids remapped",
     label = "a component field of this type cannot follow a copy",

@@ -8,6 +8,16 @@ use crate::math::Vec3;
 use glam::DQuat;
 
 /// A rotation in 3D (a unit quaternion).
+///
+/// ```
+/// use garmentcode::{Rotation, Vec3};
+///
+/// let quarter = Rotation::from_euler_xyz_degrees([0.0, 90.0, 0.0]);
+/// assert!((quarter.apply(Vec3::X) - Vec3::new(0.0, 0.0, -1.0)).length() < 1e-12);
+/// // Written back as the same intrinsic XYZ Euler angles.
+/// let angles = Rotation::from_euler_xyz_degrees([10.0, 20.0, 30.0]).as_euler_xyz_degrees();
+/// assert!(angles.iter().zip([10.0, 20.0, 30.0]).all(|(x, y)| (x - y).abs() < 1e-9));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Rotation(pub DQuat);
 

@@ -17,6 +17,19 @@ use crate::math::{Vec2, abs_to_rel_vector, norm};
 ///
 /// Fits are memoised per thread until the arena is cleared, like
 /// [`match_tangents`]: the result is a pure function of the inputs' bits.
+///
+/// ```
+/// use garmentcode::curves::quadratic_from_tangents;
+/// use garmentcode::{Curve, Vec2};
+///
+/// // Leave at 45° up, arrive at 45° down: the control point is above the chord's middle.
+/// let (start, end) = (Vec2::ZERO, Vec2::new(10.0, 0.0));
+/// let tangents = (Some(Vec2::new(1.0, 1.0)), Some(Vec2::new(1.0, -1.0)));
+/// let Curve::Quadratic(c) = quadratic_from_tangents(start, end, tangents.0, tangents.1, Vec2::new(0.3, 0.2)) else {
+///     unreachable!()
+/// };
+/// assert!((c - Vec2::new(0.5, 0.5)).length() < 1e-4);
+/// ```
 pub fn quadratic_from_tangents(start: Vec2, end: Vec2, tan0: Option<Vec2>, tan1: Option<Vec2>, initial: Vec2) -> Curve {
     let rel = |t: Vec2| {
         let r = abs_to_rel_vector(start, end, t);
@@ -37,6 +50,17 @@ pub fn quadratic_from_tangents(start: Vec2, end: Vec2, tan0: Option<Vec2>, tan1:
 /// `B(½) = p` with the control point straight above the chord midpoint, i.e.
 /// control `(p.x·2 − ½, 2·p.y)` when `p.x = ½`; in general the control point is
 /// found so that the curve's y-extremum lies at `p`.
+///
+/// ```
+/// use garmentcode::curves::quadratic_with_extremum;
+/// use garmentcode::{Curve, Edge, Vec2};
+///
+/// let curve = quadratic_with_extremum(Vec2::new(0.5, 0.2)).unwrap();
+/// assert_eq!(curve, Curve::Quadratic(Vec2::new(0.5, 0.4)));
+/// let edge = Edge { start: Vec2::ZERO, end: Vec2::new(10.0, 0.0), curve };
+/// assert!((edge.point(0.5) - Vec2::new(5.0, 2.0)).length() < 1e-12);
+/// assert_eq!(quadratic_with_extremum(Vec2::new(0.5, 0.0)), None);
+/// ```
 pub fn quadratic_with_extremum(p: Vec2) -> Option<Curve> {
     // For B(t) = 2t(1−t)c + t²(1,0): y(t) = 2t(1−t)c_y has its extremum at t = ½
     // with value c_y/2, where x(½) = c_x/2 + ¼. So c = (2(p_x − ¼), 2 p_y).
@@ -51,6 +75,17 @@ pub fn quadratic_with_extremum(p: Vec2) -> Option<Curve> {
 /// and hood inversion (the reference's `curve_match_tangents`), minimising the
 /// reference's own objective deterministically (see [`inversion`]). A line or
 /// quadratic edge is first raised to the cubic of the same shape.
+///
+/// ```
+/// use garmentcode::curves::match_tangents;
+/// use garmentcode::{Edge, Vec2};
+///
+/// let chord = Edge::line(Vec2::ZERO, Vec2::new(10.0, 0.0));
+/// let fitted = match_tangents(&chord, Vec2::new(1.0, 1.0), Vec2::new(1.0, -1.0), 12.0);
+/// assert_eq!(fitted.start, Vec2::ZERO);
+/// assert!((fitted.length() - 12.0).abs() < 0.1);
+/// assert_eq!(fitted.curve.code(), 'C');
+/// ```
 pub fn match_tangents(edge: &Edge, t0: Vec2, t1: Vec2, target_len: f64) -> Edge {
     let (s, e) = (edge.start, edge.end);
     let [c1, c2] = match edge.abs_controls()[..] {

@@ -41,6 +41,21 @@ use crate::pattern::Pattern;
 /// reference refuses to draw one) and, with [`Error::Input`](crate::Error::Input), on
 /// edges or stitches that refer to missing vertices, panels or edges and on
 /// non-finite numbers.
+///
+/// ```
+/// use garmentcode::draw::{DrawOptions, to_svg};
+/// use garmentcode::{Arena, EdgeSeq, PartExt, Pattern, Vec2};
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 30.0), Vec2::new(20.0, 30.0), Vec2::new(20.0, 0.0)];
+/// let edges = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// let panel = a.panel_with_edges("front", edges);
+/// let pattern = PartExt::assemble(&panel, &mut a, "demo")?;
+/// let svg = to_svg(&pattern, &DrawOptions::default())?;
+/// assert!(svg.contains("<svg") && svg.contains(">front<"));
+/// assert!(to_svg(&Pattern::new("empty"), &DrawOptions::default()).is_err());
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 pub fn to_svg(p: &Pattern, opts: &DrawOptions) -> Result<String> {
     let sheet = layout::layout(p, opts)?;
     Ok(svg::write(&sheet, &p.name))

@@ -18,10 +18,14 @@ use std::fmt::Write;
 pub const MAX_EXTENT_CM: f64 = 10_000.0;
 /// Largest relative control-point coordinate (in edge lengths).
 pub const MAX_CONTROL: f64 = 1_000.0;
-/// Most panels a specification may hold.
-pub const MAX_PANELS: usize = 1_000;
-/// Most edges one panel may have.
-pub const MAX_EDGES_PER_PANEL: usize = 1_000;
+/// Most panels a specification may hold (the garments of the reference cases have
+/// at most 31).
+pub const MAX_PANELS: usize = 200;
+/// Most edges one panel may have (at most 59 in the reference cases).
+pub const MAX_EDGES_PER_PANEL: usize = 500;
+/// Most edges all panels together may have (at most 208 in the reference cases):
+/// keeps the pairwise self-intersection test of every outline well under a second.
+pub const MAX_EDGES: usize = 5_000;
 
 impl Pattern {
     /// Parse a specification file's text.
@@ -35,12 +39,16 @@ impl Pattern {
 
     /// Refuse geometry no garment has, before any algorithm whose work grows with
     /// it runs: coordinates beyond [`MAX_EXTENT_CM`], control points far outside
-    /// their edge, and more panels or edges than [`MAX_PANELS`] and
-    /// [`MAX_EDGES_PER_PANEL`].
+    /// their edge, and more panels or edges than [`MAX_PANELS`],
+    /// [`MAX_EDGES_PER_PANEL`] and [`MAX_EDGES`].
     fn check_extent(&self) -> Result<()> {
         let far = |x: f64| x.abs() > MAX_EXTENT_CM;
         if self.panels.len() > MAX_PANELS {
             return Err(Error::Input(format!("{} panels: at most {MAX_PANELS} are accepted", self.panels.len())));
+        }
+        let edges: usize = self.panels.iter().map(|p| p.edges.len()).sum();
+        if edges > MAX_EDGES {
+            return Err(Error::Input(format!("{edges} edges in all: at most {MAX_EDGES} are accepted")));
         }
         for p in &self.panels {
             let at = format!("pattern.panels.{}", p.name);

@@ -79,6 +79,30 @@ impl ParamValue for bool {
 
 /// An enum whose variants are the options of a categorical parameter
 /// (`#[derive(Choice)]`).
+///
+/// A parameter is a choice, or with `Option` a choice that may be none:
+///
+/// ```
+/// use garmentcode::{Choice, Params};
+///
+/// #[derive(Clone, Copy, Debug, PartialEq, Choice)]
+/// enum Cuff {
+///     Band,
+///     Flared,
+/// }
+///
+/// #[derive(Clone, Debug, PartialEq, Params)]
+/// struct Sleeve {
+///     /// Cuff at the wrist, if any.
+///     #[param(default = None)]
+///     cuff: Option<Cuff>,
+/// }
+///
+/// assert_eq!(Cuff::NAMES, ["Band", "Flared"]);
+/// assert_eq!(Cuff::from_name("Flared").map(|c| c.name()), Some("Flared"));
+/// assert_eq!(Sleeve::defaults().cuff, None);
+/// assert_eq!(Sleeve::design_space().get("cuff").unwrap().range.to_string(), "one of [Band, Flared, null]");
+/// ```
 #[diagnostic::on_unimplemented(
     message = "`{Self}` is not a choice of options",
     label = "no `#[derive(Choice)]` on this type",
@@ -131,6 +155,29 @@ impl<T: Choice> ParamValue for Option<T> {
 }
 
 /// A group of design parameters (`#[derive(Params)]`).
+///
+/// Design files are read into and written from such a tree:
+///
+/// ```
+/// use garmentcode::Params;
+/// use garmentcode::io::{read_design, write_design};
+///
+/// #[derive(Clone, Debug, PartialEq, Params)]
+/// struct Skirt {
+///     /// Fullness of the hem in full circles.
+///     #[param(range = 0.05..=1.5, default = 0.3)]
+///     suns: f64,
+/// }
+///
+/// let space = Skirt::design_space();
+/// let mut skirt = Skirt::defaults();
+/// skirt.suns = 1.0;
+/// let file = write_design(&skirt, &space);
+/// assert_eq!(read_design::<Skirt>(&file, "skirt.yaml", &space).unwrap(), skirt);
+/// let too_full = file.replace("v: 1.0", "v: 2.0");
+/// let err = read_design::<Skirt>(&too_full, "skirt.yaml", &space).unwrap_err();
+/// assert!(err.to_string().contains("suns"));
+/// ```
 #[diagnostic::on_unimplemented(
     message = "`{Self}` is not a group of design parameters",
     label = "no `#[derive(Params)]` on this type",

@@ -7,6 +7,29 @@ use std::sync::OnceLock;
 use std::sync::atomic::AtomicUsize;
 
 /// The flattened schema of a design.
+///
+/// ```
+/// use garmentcode::Params;
+///
+/// #[derive(Clone, Debug, PartialEq, Params)]
+/// struct Skirt {
+///     /// Number of panels.
+///     #[param(range = 3..=12, default = 6, prob = 0.4)]
+///     n_panels: i64,
+/// }
+///
+/// #[derive(Clone, Debug, PartialEq, Params)]
+/// struct Design {
+///     skirt: Skirt,
+/// }
+///
+/// let space = Design::design_space();
+/// assert!(space.problems().is_empty());
+/// let spec = space.get("skirt.n_panels").unwrap();
+/// assert_eq!((spec.range.to_string(), spec.default.to_string()), ("[3.0, 12.0]".to_string(), "6".to_string()));
+/// assert!(space.is_group("skirt"));
+/// assert!(space.to_yaml().starts_with("design:\n  skirt:\n    n_panels:\n"));
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct DesignSpace {
     pub(crate) params: Vec<ParamSpec>,

@@ -14,6 +14,22 @@ use crate::math::Vec2;
 use crate::rotation::Rotation;
 
 /// A whole sewing pattern.
+///
+/// What a garment assembles into; reads and writes `specification.json`:
+///
+/// ```
+/// use garmentcode::{Arena, EdgeSeq, PartExt, Pattern, Vec2};
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 30.0), Vec2::new(20.0, 30.0), Vec2::new(20.0, 0.0)];
+/// let edges = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// let panel = a.panel_with_edges("front", edges);
+/// let pattern = PartExt::assemble(&panel, &mut a, "demo")?;
+/// assert_eq!(pattern.panel("front").map(|p| p.vertices.len()), Some(4));
+/// let json = pattern.to_json()?;
+/// assert_eq!(Pattern::from_json(&json)?.panels, pattern.panels);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pattern {
     /// Name of the pattern (the garment's name; not written in the file).

@@ -20,7 +20,7 @@
 //!
 //! Each SQP stage minimises a quadratic model of the Lagrangian subject to the
 //! linearised curvature bounds (a 6-unknown QP solved exactly by a dual active-set
-//! method, [`super::qp`]; convexified along the active bounds' normals when needed), with
+//! method, the `qp` module; convexified along the active bounds' normals when needed), with
 //! exact analytic derivatives (B' and B'' are linear in x, so curvature gradients and
 //! Hessians are closed-form; the length uses a fixed 64-point Gauss-Legendre rule, smooth
 //! in x and ~1e-14 accurate on these curves), globalised by Levenberg-Marquardt damping
