@@ -413,6 +413,10 @@ fn real_faults_are_named_errors() {
     bad.stitches[0].sides[1].edge = 99;
     assert!(matches!(BoxMesh::new(&bad, DEFAULT_RESOLUTION), Err(MeshError::MissingEdge { stitch: 0, edge: 99, .. })));
     assert!(matches!(BoxMesh::new(&pattern, 0.0), Err(MeshError::Resolution(_))));
+    // Bounded memory: a resolution far too fine for the garment is refused before triangulating.
+    let started = std::time::Instant::now();
+    assert!(matches!(BoxMesh::new(&pattern, 0.001), Err(MeshError::DegeneratePanel { reason, .. }) if reason.contains("too large")));
+    assert!(started.elapsed().as_secs() < 5);
 }
 
 #[test]

@@ -59,6 +59,10 @@ pub const DEFAULT_RESOLUTION: f64 = 1.0;
 /// Most vertices one edge may get (guards memory against absurd lengths).
 const MAX_EDGE_VERTICES: usize = 1_000_000;
 
+/// Most vertices a whole mesh may have (about 400 MB of triangulation at most): a
+/// pattern whose panels would need more at the resolution asked is refused.
+const MAX_MESH_VERTICES: f64 = 4_000_000.0;
+
 /// What can make a pattern impossible to mesh.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum MeshError {
@@ -330,6 +334,7 @@ impl BoxMesh {
         // Panels: local vertices, orientation, triangulation.
         let mut panels = Vec::with_capacity(specs.len());
         let mut texture_offset = 0;
+        let mut estimate = 0.0;
         for (pi, p) in specs.iter().enumerate() {
             let mut points: Vec<Vec2> = Vec::new();
             let mut seen: HashMap<[u64; 2], usize> = HashMap::new();
@@ -364,6 +369,16 @@ impl BoxMesh {
                 }
             }
             let counter_clockwise = outline_orientation(p, &samples)?;
+            // Bounded memory: about one interior vertex per 0.5·res² of the panel's bounding box.
+            let (lo, hi) =
+                points.iter().fold((Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY)), |(lo, hi), q| (lo.min(*q), hi.max(*q)));
+            estimate += points.len() as f64 + 2.0 * (hi - lo).x * (hi - lo).y / (resolution * resolution);
+            if !(estimate <= MAX_MESH_VERTICES) {
+                return Err(MeshError::DegeneratePanel {
+                    panel: p.name.clone(),
+                    reason: format!("too large to mesh at {resolution} cm (over {MAX_MESH_VERTICES} vertices)"),
+                });
+            }
             let segments: Vec<[usize; 2]> = edges.iter().flat_map(|e| e.local.windows(2).map(|w| [w[0], w[1]])).collect();
             let n_boundary = points.len();
             // A clockwise panel is triangulated mirrored (x → −x, exact) and mirrored back, so
