@@ -373,7 +373,7 @@ impl BoxMesh {
             let (lo, hi) =
                 points.iter().fold((Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY)), |(lo, hi), q| (lo.min(*q), hi.max(*q)));
             estimate += points.len() as f64 + 2.0 * (hi - lo).x * (hi - lo).y / (resolution * resolution);
-            if !(estimate <= MAX_MESH_VERTICES) {
+            if estimate.is_nan() || estimate > MAX_MESH_VERTICES {
                 return Err(MeshError::DegeneratePanel {
                     panel: p.name.clone(),
                     reason: format!("too large to mesh at {resolution} cm (over {MAX_MESH_VERTICES} vertices)"),
