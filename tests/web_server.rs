@@ -313,3 +313,29 @@ fn load_200_clients_and_40_slow_ones() {
     // And builds still work afterwards.
     still_serving(addr);
 }
+
+/// A server whose stderr was closed (its reader gone) keeps serving: logging a
+/// request that fails, which writes to the closed pipe, must not bring it down.
+#[test]
+fn a_closed_stderr_does_not_stop_the_server() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_garmentcode"))
+        .args(["serve", "--port", "0"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start garmentcode serve");
+    drop(child.stderr.take());
+    let mut line = String::new();
+    BufReader::new(child.stdout.take().unwrap()).read_line(&mut line).unwrap();
+    let url = line.split_whitespace().find(|w| w.starts_with("http://")).unwrap_or_else(|| panic!("no address in {line:?}"));
+    let server = Server { child, addr: url.trim_start_matches("http://").trim_end_matches('/').parse().unwrap() };
+    for _ in 0..3 {
+        let (status, _) = post(server.addr, "/api/pattern", "{not json");
+        assert_eq!(status, 400);
+        let (status, _) = get(server.addr, "/no/such/path");
+        assert_eq!(status, 404);
+        still_serving(server.addr);
+    }
+    let mut server = server;
+    assert!(server.child.try_wait().unwrap().is_none(), "the server is still running");
+}
