@@ -35,6 +35,9 @@ pub enum Command {
     /// Make a dataset of random garments, or replay one sample of it.
     #[command(long_about = SAMPLE_ABOUT)]
     Sample(SampleArgs),
+    /// Mesh a pattern for cloth simulation: the reference's box mesh and its files.
+    #[command(long_about = MESH_ABOUT)]
+    Mesh(MeshArgs),
     /// Run the web configurator (a page with a control for every parameter, and its JSON API).
     #[command(long_about = SERVE_ABOUT)]
     Serve(ServeArgs),
@@ -51,6 +54,16 @@ The reference's checks (design filter, total length, self-intersection) are prin
 
 The output folder is written whole: into a temporary folder first, then swapped in. An existing \
 folder is replaced only when it holds nothing but files garmentcode writes (or with --force).";
+
+const MESH_ABOUT: &str = "\
+Mesh a pattern for cloth simulation, as the reference's BoxMesh does: every panel triangulated at \
+--resolution cm, placed in 3D, the two sides of every stitch merged. DIR gets NAME_boxmesh.obj (cm, \
+with per-corner UVs), NAME_material.mtl, NAME_sim_segmentation.txt (a panel name or stitch labels \
+per vertex), NAME_orig_lens.pickle (2D rest lengths), NAME_vertex_labels.yaml, NAME_specification.json, \
+and NAME_sim_mesh.obj (metres) and NAME_boxmesh.ply (segments as vertex attributes). NAME is the \
+specification's file name without _specification.json (a plain specification.json: its folder's name).
+
+The output folder is written whole, as `build` writes it.";
 
 const CHECK_ABOUT: &str = "\
 Validate a pattern: errors (open loops, bad indices, degenerate edges, dangling stitches, edges \
@@ -286,6 +299,26 @@ pub struct ServeArgs {
     /// Address to listen on: loopback by default; 0.0.0.0 makes the configurator reachable from other machines.
     #[arg(long, default_value = "127.0.0.1")]
     pub host: String,
+}
+
+/// `garmentcode mesh`.
+#[derive(Args, Debug)]
+pub struct MeshArgs {
+    /// The pattern (specification.json).
+    #[arg(value_name = "SPEC.json")]
+    pub file: String,
+    /// Output folder.
+    #[arg(short, long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// Spacing of the boundary vertices in cm (interior edges up to 1.43 times it).
+    #[arg(short, long, value_name = "CM", default_value_t = 1.0)]
+    pub resolution: f64,
+    /// File name prefix (default: from the specification's file name).
+    #[arg(long)]
+    pub name: Option<String>,
+    /// Replace an output folder that holds files garmentcode did not write.
+    #[arg(short, long)]
+    pub force: bool,
 }
 
 /// `garmentcode completions`.

@@ -34,6 +34,7 @@ fn main() {
         Command::Render(a) => commands::render::run(a),
         Command::Compare(a) => commands::compare::run(a),
         Command::Sample(a) => commands::sample::run(a),
+        Command::Mesh(a) => commands::mesh::run(a),
         Command::Serve(a) => commands::serve::run(a),
         Command::Completions(a) => commands::completions(a),
     };

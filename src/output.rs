@@ -14,6 +14,23 @@ use std::path::{Path, PathBuf};
 pub const OWN_FILES: &[&str] =
     &["specification.json", "pattern.svg", "pattern.png", "design_params.yaml", "body_measurements.yaml", "checks.json", "error.txt"];
 
+/// Suffixes of the files `garmentcode mesh` writes after the pattern's name.
+pub const OWN_MESH_SUFFIXES: &[&str] = &[
+    "_specification.json",
+    "_boxmesh.obj",
+    "_material.mtl",
+    "_sim_segmentation.txt",
+    "_orig_lens.pickle",
+    "_vertex_labels.yaml",
+    "_sim_mesh.obj",
+    "_boxmesh.ply",
+];
+
+/// A file name garmentcode writes into an output folder.
+fn is_own_file(name: &str) -> bool {
+    OWN_FILES.contains(&name) || OWN_MESH_SUFFIXES.iter().any(|s| name.len() > s.len() && name.ends_with(s))
+}
+
 /// Files of an output folder, written together.
 #[derive(Default)]
 pub struct OutputSet {
@@ -65,7 +82,7 @@ impl OutputSet {
 
     /// Write the folder `dir` whole: the files go into a temporary sibling folder
     /// that then replaces `dir`. An existing `dir` must hold only files
-    /// garmentcode writes ([`OWN_FILES`]), unless `force`.
+    /// garmentcode writes ([`OWN_FILES`], [`OWN_MESH_SUFFIXES`]), unless `force`.
     pub fn write_folder(&self, dir: &Path, force: bool) -> Result<(), WriteError> {
         let (parent, base) = split(dir)?;
         fs::create_dir_all(&parent)?;
@@ -145,7 +162,7 @@ fn check_replaceable(dir: &Path, force: bool) -> Result<(), WriteError> {
         let name = e.file_name().to_string_lossy().into_owned();
         if e.file_type()?.is_dir() {
             folders.push(name);
-        } else if !OWN_FILES.contains(&name.as_str()) {
+        } else if !is_own_file(&name) {
             files.push(name);
         }
     }

@@ -412,3 +412,40 @@ fn build_warnings_explain_the_references_internal_errors() {
     // checks.json keeps the reference's wording.
     assert!(std::fs::read_to_string(dir.join("out/checks.json")).unwrap().contains("ERROR::IncorrectParams::Skirt2 ruffles + belt"));
 }
+
+#[test]
+fn mesh_writes_the_reference_files_and_replaces_its_own_folder() {
+    let dir = scratch("mesh");
+    let o = run(&["build", "--out", "shirt"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let o = run(&["mesh", "shirt/specification.json", "--out", "m"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    for suffix in [
+        "_specification.json",
+        "_boxmesh.obj",
+        "_material.mtl",
+        "_sim_segmentation.txt",
+        "_orig_lens.pickle",
+        "_vertex_labels.yaml",
+        "_sim_mesh.obj",
+        "_boxmesh.ply",
+    ] {
+        assert!(dir.join("m").join(format!("shirt{suffix}")).metadata().unwrap().len() > 0, "shirt{suffix} written");
+    }
+    let obj = std::fs::read_to_string(dir.join("m/shirt_boxmesh.obj")).unwrap();
+    let seg = std::fs::read_to_string(dir.join("m/shirt_sim_segmentation.txt")).unwrap();
+    assert_eq!(obj.lines().filter(|l| l.starts_with("v ")).count(), seg.lines().count(), "one segmentation line per vertex");
+    // Deterministic, and a rerun (coarser) replaces its own folder without --force.
+    let o = run(&["mesh", "shirt/specification.json", "--out", "m2", "--name", "shirt"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert_eq!(obj, std::fs::read_to_string(dir.join("m2/shirt_boxmesh.obj")).unwrap());
+    let o = run(&["mesh", "shirt/specification.json", "--out", "m", "--resolution", "2"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let coarse = std::fs::read_to_string(dir.join("m/shirt_boxmesh.obj")).unwrap();
+    assert!(coarse.len() < obj.len() / 2, "a coarser mesh");
+    // Bad input: a clear error, nothing written.
+    let o = run(&["mesh", "shirt/specification.json", "--out", "m3", "--resolution", "0"], &dir);
+    assert_eq!(code(&o), 2, "{}", stderr(&o));
+    assert!(stderr(&o).contains("resolution"), "{}", stderr(&o));
+    assert!(!dir.join("m3").exists());
+}

@@ -19,6 +19,8 @@
 //!   [`DesignSpace`], [`Body`], [`Pattern`], all stored in the [`Arena`].
 //! - Function namespaces: [`ops`] (the paper's operators), [`curves`] (curve
 //!   helpers), [`intersect`] (outline checks), [`math`].
+//! - [`mesh`] (feature `mesh`, on by default): the reference's simulation box mesh
+//!   of a pattern and its files.
 //! - Apart from geometry: [`io`] (design files and design spaces, JSON Schema) and
 //!   [`draw`] (SVG; PNG behind the `png` feature, on by default).
 //! - [`parity`]: code that exists only to match the reference bit for bit (scipy's
@@ -60,6 +62,8 @@ mod stitch;
 pub mod curves;
 pub mod intersect;
 pub mod math;
+#[cfg(feature = "mesh")]
+pub mod mesh;
 pub mod ops;
 pub mod slots;
 

@@ -3,6 +3,7 @@
 pub mod build;
 pub mod check;
 pub mod compare;
+pub mod mesh;
 pub mod render;
 pub mod sample;
 pub mod schema;

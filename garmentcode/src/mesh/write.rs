@@ -1,0 +1,254 @@
+//! The box mesh's files, laid out as the reference writes them, and readers for our own OBJ
+//! and segmentation files.
+
+use std::fmt::Write as _;
+use std::io;
+use std::path::{Path, PathBuf};
+
+use super::{BoxMesh, VertexLabel};
+use crate::parity::float_repr::write_python_float;
+use crate::{Vec2, Vec3};
+
+/// Padding between texture islands (cm), as the reference lays them out.
+const UV_PADDING: f64 = 3.0;
+
+impl BoxMesh {
+    /// File name prefix: the pattern name without a `_specification` suffix.
+    pub fn file_prefix(&self) -> &str {
+        self.name.strip_suffix("_specification").unwrap_or(&self.name)
+    }
+
+    /// `<name>_boxmesh.obj`: `mtllib`, `v` (cm, Python float repr), `vt` (one per panel-local
+    /// vertex), `s 1`, `usemtl panels_texture`, `f v/vt v/vt v/vt`.
+    pub fn obj(&self) -> String {
+        let mut out = String::with_capacity(64 * (self.vertices.len() + self.faces.len()));
+        let _ = writeln!(out, "mtllib {}_material.mtl", self.file_prefix());
+        for v in &self.vertices {
+            out.push_str("v ");
+            push_xyz(&mut out, *v);
+        }
+        for uv in self.texture_coordinates() {
+            out.push_str("vt ");
+            write_python_float(&mut out, uv.x);
+            out.push(' ');
+            write_python_float(&mut out, uv.y);
+            out.push('\n');
+        }
+        out.push_str("s 1\nusemtl panels_texture\n");
+        for f in &self.faces {
+            let _ = writeln!(
+                out,
+                "f {}/{} {}/{} {}/{}",
+                f.vertices[0] + 1,
+                f.uvs[0] + 1,
+                f.vertices[1] + 1,
+                f.uvs[1] + 1,
+                f.vertices[2] + 1,
+                f.uvs[2] + 1
+            );
+        }
+        out
+    }
+
+    /// Texture coordinates of every panel-local vertex (texture id order): each panel's 2D
+    /// points minus its minimum, islands side by side with 3 cm padding, scaled into `[0, 1]`.
+    pub fn texture_coordinates(&self) -> Vec<Vec2> {
+        let mut uvs = Vec::new();
+        let mut x = UV_PADDING;
+        for p in &self.panels {
+            let local = p.uv();
+            let width = local.iter().fold(0.0f64, |m, q| m.max(q.x));
+            uvs.extend(local.iter().map(|q| *q + Vec2::new(x, UV_PADDING)));
+            x += width + UV_PADDING;
+        }
+        let scale = uvs.iter().fold(0.0f64, |m, q| m.max(q.x).max(q.y)) + UV_PADDING;
+        uvs.iter().map(|q| *q / scale).collect()
+    }
+
+    /// `<name>_material.mtl`.
+    pub fn material(&self) -> String {
+        format!(
+            "newmtl panels_texture\nNs 0.000000\nKa 1.000000 1.000000 1.000000\nKs 0.000000 0.000000 0.000000\n\
+             Ke 0.000000 0.000000 0.000000\nNi 1.000000\nd 1.000000\nillum 1\nmap_Kd {}_texture_fabric.png\n",
+            self.file_prefix()
+        )
+    }
+
+    /// `<name>_sim_segmentation.txt`: one line per vertex.
+    pub fn segmentation(&self) -> String {
+        let mut out = String::new();
+        for v in 0..self.vertices.len() {
+            out.push_str(&self.segmentation_label(v));
+            out.push('\n');
+        }
+        out
+    }
+
+    /// `<name>_orig_lens.pickle`: the rest lengths as a pickled `{(i, j): length}` dict
+    /// (protocol 2, written by hand: `}` then `(`, per item `J i J j \x86 G <f64 BE>`, `u`, `.`).
+    pub fn rest_lengths_pickle(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(16 + 20 * self.rest_lengths.len());
+        out.extend_from_slice(&[0x80, 2, b'}']);
+        for chunk in self.rest_lengths.chunks(1000) {
+            out.push(b'(');
+            for ([i, j], len) in chunk {
+                for id in [i, j] {
+                    out.push(b'J');
+                    out.extend_from_slice(&(*id as i32).to_le_bytes());
+                }
+                out.push(0x86);
+                out.push(b'G');
+                out.extend_from_slice(&len.to_be_bytes());
+            }
+            out.push(b'u');
+        }
+        out.push(b'.');
+        out
+    }
+
+    /// `<name>_vertex_labels.yaml`: `label:` then `- id` lines (block style), `{}` when empty.
+    pub fn vertex_labels_yaml(&self) -> String {
+        if self.vertex_labels.is_empty() {
+            return "{}\n".into();
+        }
+        let mut out = String::new();
+        for (label, ids) in &self.vertex_labels {
+            let _ = writeln!(out, "{}:", yaml_key(label));
+            if ids.is_empty() {
+                out.pop();
+                out.push_str(" []\n");
+            }
+            for id in ids {
+                let _ = writeln!(out, "- {id}");
+            }
+        }
+        out
+    }
+
+    /// `<name>_sim_mesh.obj`: the welded mesh in metres, plain `v` and `f` lines.
+    pub fn welded_obj_metres(&self) -> String {
+        let mut out = String::with_capacity(48 * (self.vertices.len() + self.faces.len()));
+        for v in &self.vertices {
+            out.push_str("v ");
+            push_xyz(&mut out, *v / 100.0);
+        }
+        for f in &self.faces {
+            let _ = writeln!(out, "f {} {} {}", f.vertices[0] + 1, f.vertices[1] + 1, f.vertices[2] + 1);
+        }
+        out
+    }
+
+    /// `<name>_boxmesh.ply` (ASCII, cm): per vertex `x y z segment stitch`, where `segment`
+    /// is the panel index (panels named in `comment panel <i> <name>` lines) or -1 for a
+    /// stitch vertex and `stitch` the first stitch of a stitch vertex (-1 otherwise).
+    pub fn ply(&self) -> String {
+        let mut out = String::from("ply\nformat ascii 1.0\ncomment garmentcode box mesh, cm\n");
+        for (i, p) in self.panels.iter().enumerate() {
+            let _ = writeln!(out, "comment panel {i} {}", p.name);
+        }
+        let _ = write!(
+            out,
+            "element vertex {}\nproperty double x\nproperty double y\nproperty double z\nproperty int segment\nproperty int stitch\n\
+             element face {}\nproperty list uchar int vertex_indices\nend_header\n",
+            self.vertices.len(),
+            self.faces.len()
+        );
+        for (v, label) in self.vertices.iter().zip(&self.labels) {
+            let (segment, stitch) = match label {
+                VertexLabel::Stitch(ks) => (-1, ks.first().map_or(-1, |&k| k as i64)),
+                VertexLabel::Panel(p) => (*p as i64, -1),
+            };
+            let _ = writeln!(out, "{} {} {} {segment} {stitch}", v.x, v.y, v.z);
+        }
+        for f in &self.faces {
+            let _ = writeln!(out, "3 {} {} {}", f.vertices[0], f.vertices[1], f.vertices[2]);
+        }
+        out
+    }
+
+    /// The files, named `<name><suffix>` (suffixes in [`FILE_SUFFIXES`]): the reference's
+    /// (OBJ, material, segmentation, rest lengths, vertex labels), the welded metre OBJ and the PLY.
+    pub fn files(&self) -> Vec<(String, Vec<u8>)> {
+        let name = self.file_prefix();
+        let bytes = [
+            self.obj().into_bytes(),
+            self.material().into_bytes(),
+            self.segmentation().into_bytes(),
+            self.rest_lengths_pickle(),
+            self.vertex_labels_yaml().into_bytes(),
+            self.welded_obj_metres().into_bytes(),
+            self.ply().into_bytes(),
+        ];
+        FILE_SUFFIXES.iter().zip(bytes).map(|(suffix, b)| (format!("{name}{suffix}"), b)).collect()
+    }
+
+    /// Writes [`BoxMesh::files`] into `dir`; returns the paths written.
+    pub fn write_files(&self, dir: &Path) -> io::Result<Vec<PathBuf>> {
+        std::fs::create_dir_all(dir)?;
+        let mut written = Vec::new();
+        for (name, bytes) in self.files() {
+            let path = dir.join(name);
+            std::fs::write(&path, bytes)?;
+            written.push(path);
+        }
+        Ok(written)
+    }
+}
+
+/// Suffixes of the files [`BoxMesh::files`] writes, after the pattern's name.
+pub const FILE_SUFFIXES: [&str; 7] =
+    ["_boxmesh.obj", "_material.mtl", "_sim_segmentation.txt", "_orig_lens.pickle", "_vertex_labels.yaml", "_sim_mesh.obj", "_boxmesh.ply"];
+
+fn push_xyz(out: &mut String, v: Vec3) {
+    write_python_float(out, v.x);
+    out.push(' ');
+    write_python_float(out, v.y);
+    out.push(' ');
+    write_python_float(out, v.z);
+    out.push('\n');
+}
+
+/// A YAML mapping key as PyYAML dumps a string: plain when unambiguous, else single-quoted.
+fn yaml_key(s: &str) -> String {
+    let plain = !s.is_empty()
+        && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-')
+        && !s.starts_with('-')
+        && s.parse::<f64>().is_err()
+        && !matches!(s.to_ascii_lowercase().as_str(), "true" | "false" | "yes" | "no" | "on" | "off" | "null" | "y" | "n" | "~");
+    if plain { s.to_string() } else { format!("'{}'", s.replace('\'', "''")) }
+}
+
+/// Vertices (`v x y z`) and triangles (`f a/.. b/.. c/..`, 0-based) of an OBJ text.
+pub fn read_obj(text: &str) -> Result<(Vec<Vec3>, Vec<[usize; 3]>), String> {
+    let mut vertices = Vec::new();
+    let mut faces = Vec::new();
+    for (n, line) in text.lines().enumerate() {
+        let mut it = line.split_whitespace();
+        match it.next() {
+            Some("v") => {
+                let c: Vec<f64> =
+                    it.take(3).map(|x| x.parse::<f64>().map_err(|e| format!("line {}: {e}", n + 1))).collect::<Result<_, _>>()?;
+                if c.len() != 3 {
+                    return Err(format!("line {}: a vertex needs three coordinates", n + 1));
+                }
+                vertices.push(Vec3::new(c[0], c[1], c[2]));
+            }
+            Some("f") => {
+                let ids: Vec<usize> = it
+                    .map(|t| t.split('/').next().unwrap_or("").parse::<usize>().map_err(|e| format!("line {}: {e}", n + 1)))
+                    .collect::<Result<_, _>>()?;
+                if ids.len() != 3 || ids.iter().any(|&i| i == 0 || i > vertices.len()) {
+                    return Err(format!("line {}: not a triangle of existing vertices", n + 1));
+                }
+                faces.push([ids[0] - 1, ids[1] - 1, ids[2] - 1]);
+            }
+            _ => {}
+        }
+    }
+    Ok((vertices, faces))
+}
+
+/// The labels of a segmentation file, one per vertex (each a list of comma-separated entries).
+pub fn read_segmentation(text: &str) -> Vec<Vec<String>> {
+    text.lines().map(|l| l.split(',').map(str::to_string).collect()).collect()
+}
