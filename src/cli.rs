@@ -145,15 +145,36 @@ pub struct BuildArgs {
     /// Reject a design that fails one of the reference's checks (exit 1, nothing written).
     #[arg(long)]
     pub strict: bool,
-    /// Do not draw pattern.png.
+    /// What to write besides the pattern and its inputs: `svg` and `png` drawings and
+    /// the simulation box `mesh` (NAME_boxmesh.obj and the files `garmentcode mesh`
+    /// writes); `json` (the pattern, design, body and checks) is always written.
+    #[arg(long, value_enum, value_delimiter = ',', value_name = "FORMATS", default_value = "json,svg,png")]
+    pub formats: Vec<BuildFormat>,
+    /// Do not draw pattern.png (the same as leaving `png` out of --formats).
     #[arg(long)]
     pub no_png: bool,
+    /// Spacing of the mesh's boundary vertices in cm, with `--formats ...,mesh`.
+    #[arg(long, value_name = "CM", default_value_t = 1.0, value_parser = positive_cm)]
+    pub mesh_resolution: f64,
     /// Drawing layout.
     #[arg(short, long, value_enum, default_value_t = LayoutArg::Placed)]
     pub layout: LayoutArg,
     /// Replace an output folder that holds files garmentcode did not write.
     #[arg(short, long)]
     pub force: bool,
+}
+
+/// What `build` writes.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BuildFormat {
+    /// specification.json, design_params.yaml, body_measurements.yaml, checks.json (always).
+    Json,
+    /// pattern.svg.
+    Svg,
+    /// pattern.png.
+    Png,
+    /// The simulation box mesh (as `garmentcode mesh` writes it).
+    Mesh,
 }
 
 /// Formats of `schema`.

@@ -449,3 +449,33 @@ fn mesh_writes_the_reference_files_and_replaces_its_own_folder() {
     assert!(stderr(&o).contains("resolution"), "{}", stderr(&o));
     assert!(!dir.join("m3").exists());
 }
+
+/// `build --formats` chooses the drawings and the simulation mesh; the mesh files are
+/// those `garmentcode mesh` writes for the built pattern, byte for byte.
+#[test]
+fn build_formats_choose_drawings_and_the_mesh() {
+    let dir = scratch("build_formats");
+    let o = run(&["build", "--formats", "json,svg,mesh", "--out", "a"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let a = dir.join("a");
+    assert!(a.join("pattern.svg").is_file() && !a.join("pattern.png").exists(), "svg without png");
+    let mesh_files: Vec<String> = std::fs::read_dir(&a)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with("t-shirt_"))
+        .collect();
+    assert_eq!(mesh_files.len(), 7, "{mesh_files:?}");
+    let o = run(&["mesh", "a/specification.json", "--name", "t-shirt", "--out", "m"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    for f in &mesh_files {
+        let (x, y) = (std::fs::read(a.join(f)).unwrap(), std::fs::read(dir.join("m").join(f)).unwrap());
+        assert!(x == y, "{f} differs from `garmentcode mesh`");
+    }
+    // Unknown formats and resolutions are usage errors; nothing is written.
+    let o = run(&["build", "--formats", "json,stl", "--out", "b"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("possible values: json, svg, png, mesh"), "{}", stderr(&o));
+    let o = run(&["build", "--formats", "mesh", "--mesh-resolution", "0", "--out", "b"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(!dir.join("b").exists());
+}

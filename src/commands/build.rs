@@ -1,10 +1,11 @@
 //! `garmentcode build`: a garment from a design and a body into a folder.
 
-use crate::cli::BuildArgs;
+use crate::cli::{BuildArgs, BuildFormat};
 use crate::commands::{CliError, load_body, load_design, write_folder};
 use crate::output::OutputSet;
 use garmentcode::Params;
 use garmentcode::io::write_design;
+use garmentcode::mesh::BoxMesh;
 use garments::Design;
 use garments::build::build;
 
@@ -25,8 +26,21 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
     }
     let mut set = OutputSet::default();
     set.add("specification.json", built.pattern.to_json().map_err(|e| CliError::Input(e.to_string()))?);
-    crate::commands::add_drawings(&mut set, &built.pattern, !args.no_png, args.layout.into())
-        .map_err(|e| CliError::Input(e.to_string()))?;
+    let wants = |f: BuildFormat| args.formats.contains(&f);
+    let opts = garmentcode::draw::DrawOptions { layout: args.layout.into(), ..Default::default() };
+    if wants(BuildFormat::Svg) {
+        set.add("pattern.svg", garmentcode::draw::to_svg(&built.pattern, &opts).map_err(|e| CliError::Input(e.to_string()))?);
+    }
+    if wants(BuildFormat::Png) && !args.no_png {
+        set.add("pattern.png", garmentcode::draw::to_png(&built.pattern, &opts).map_err(|e| CliError::Input(e.to_string()))?);
+    }
+    if wants(BuildFormat::Mesh) {
+        let mesh = BoxMesh::new(&built.pattern, args.mesh_resolution)
+            .map_err(|e| CliError::Input(format!("{design_label} on {body_label}: cannot mesh: {e}")))?;
+        for (file, bytes) in mesh.files() {
+            set.add(&file, bytes);
+        }
+    }
     set.add("design_params.yaml", write_design(&design, &Design::design_space()));
     set.add("body_measurements.yaml", body.to_yaml());
     set.add("checks.json", built.checks.to_json());
