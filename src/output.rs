@@ -14,21 +14,14 @@ use std::path::{Path, PathBuf};
 pub const OWN_FILES: &[&str] =
     &["specification.json", "pattern.svg", "pattern.png", "design_params.yaml", "body_measurements.yaml", "checks.json", "error.txt"];
 
-/// Suffixes of the files `garmentcode mesh` writes after the pattern's name.
-pub const OWN_MESH_SUFFIXES: &[&str] = &[
-    "_specification.json",
-    "_boxmesh.obj",
-    "_material.mtl",
-    "_sim_segmentation.txt",
-    "_orig_lens.pickle",
-    "_vertex_labels.yaml",
-    "_sim_mesh.obj",
-    "_boxmesh.ply",
-];
+/// Suffix of the pattern `garmentcode mesh` writes beside the mesh files (whose
+/// suffixes are [`garmentcode::mesh::write::FILE_SUFFIXES`]), after the pattern's name.
+const MESH_SPEC_SUFFIX: &str = "_specification.json";
 
 /// A file name garmentcode writes into an output folder.
 fn is_own_file(name: &str) -> bool {
-    OWN_FILES.contains(&name) || OWN_MESH_SUFFIXES.iter().any(|s| name.len() > s.len() && name.ends_with(s))
+    let mut mesh_suffixes = std::iter::once(MESH_SPEC_SUFFIX).chain(garmentcode::mesh::write::FILE_SUFFIXES);
+    OWN_FILES.contains(&name) || mesh_suffixes.any(|s| name.len() > s.len() && name.ends_with(s))
 }
 
 /// Files of an output folder, written together.
@@ -82,7 +75,7 @@ impl OutputSet {
 
     /// Write the folder `dir` whole: the files go into a temporary sibling folder
     /// that then replaces `dir`. An existing `dir` must hold only files
-    /// garmentcode writes ([`OWN_FILES`], [`OWN_MESH_SUFFIXES`]), unless `force`.
+    /// garmentcode writes ([`OWN_FILES`], the mesh files), unless `force`.
     pub fn write_folder(&self, dir: &Path, force: bool) -> Result<(), WriteError> {
         let (parent, base) = split(dir)?;
         fs::create_dir_all(&parent)?;

@@ -68,44 +68,53 @@ pub fn did_you_mean(arg: &str, known: &[&str]) -> String {
     }
 }
 
+/// Where a design or body comes from: a built-in name, or a file's text.
+enum Source<'a> {
+    Builtin(&'a str),
+    File(String),
+}
+
+/// `arg` as one of the `known` built-in names (also with `.yaml`), or the text of
+/// the file it names; `what` is "design" or "body" for the error.
+fn source<'a>(arg: &'a str, known: &[&str], what: &str) -> Result<Source<'a>, CliError> {
+    if let Some(name) = builtin_name(arg, known) {
+        return Ok(Source::Builtin(name));
+    }
+    if !Path::new(arg).exists() {
+        return Err(CliError::Input(format!(
+            "{arg}: no such {what} file, and not a built-in {what}{} (built-in: {})",
+            did_you_mean(arg, known),
+            known.join(", ")
+        )));
+    }
+    std::fs::read_to_string(arg).map(Source::File).map_err(|e| CliError::Input(format!("{arg}: cannot read: {e}")))
+}
+
 /// The design to build: a built-in name or a design file.
 pub fn load_design(arg: &str) -> Result<(garments::Design, String), CliError> {
     use garmentcode::Params;
     let known: Vec<&str> = garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect();
-    if let Some(name) = builtin_name(arg, &known) {
-        let d = garments::builtin::design(name).expect("a built-in design");
-        return Ok((d, name.to_string()));
+    match source(arg, &known, "design")? {
+        Source::Builtin(name) => Ok((garments::builtin::design(name).expect("a built-in design"), name.to_string())),
+        Source::File(text) => {
+            let d =
+                garmentcode::io::read_design(&text, arg, &garments::Design::design_space()).map_err(|e| CliError::Input(e.to_string()))?;
+            let stem = Path::new(arg).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "design".into());
+            Ok((d, stem))
+        }
     }
-    if !Path::new(arg).exists() {
-        return Err(CliError::Input(format!(
-            "{arg}: no such design file, and not a built-in design{} (built-in: {})",
-            did_you_mean(arg, &known),
-            known.join(", ")
-        )));
-    }
-    let text = std::fs::read_to_string(arg).map_err(|e| CliError::Input(format!("{arg}: cannot read: {e}")))?;
-    let d = garmentcode::io::read_design(&text, arg, &garments::Design::design_space()).map_err(|e| CliError::Input(e.to_string()))?;
-    let stem = Path::new(arg).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "design".into());
-    Ok((d, stem))
 }
 
 /// The body: a built-in name or a body file.
 pub fn load_body(arg: &str) -> Result<(garmentcode::Body, String), CliError> {
     let known: Vec<&str> = garments::builtin::BODIES.iter().map(|(n, _)| *n).collect();
-    if let Some(name) = builtin_name(arg, &known) {
-        let b = garments::builtin::body(name).expect("a built-in body");
-        return Ok((b, name.to_string()));
+    match source(arg, &known, "body")? {
+        Source::Builtin(name) => Ok((garments::builtin::body(name).expect("a built-in body"), name.to_string())),
+        Source::File(text) => {
+            let b = garmentcode::Body::from_yaml(&text, arg).map_err(|e| CliError::Input(e.to_string()))?;
+            Ok((b, arg.to_string()))
+        }
     }
-    if !Path::new(arg).exists() {
-        return Err(CliError::Input(format!(
-            "{arg}: no such body file, and not a built-in body{} (built-in: {})",
-            did_you_mean(arg, &known),
-            known.join(", ")
-        )));
-    }
-    let text = std::fs::read_to_string(arg).map_err(|e| CliError::Input(format!("{arg}: cannot read: {e}")))?;
-    let b = garmentcode::Body::from_yaml(&text, arg).map_err(|e| CliError::Input(e.to_string()))?;
-    Ok((b, arg.to_string()))
 }
 
 /// `garmentcode completions SHELL`.

@@ -220,24 +220,8 @@ pub struct Existing {
 pub fn scan(dir: &Path, s: &Settings, n: u64, size: u64, wanted: impl Fn(u64) -> bool) -> Result<Existing, String> {
     let shards = n.div_ceil(size);
     let mut existing = Existing { done: Vec::new(), records: Vec::new(), missing: Vec::new(), removed_temps: 0 };
-    let mut stale: Vec<PathBuf> = Vec::new();
-    let entries = fs::read_dir(dir).map_err(|e| format!("{}: cannot list: {e}", dir.display()))?;
-    for entry in entries {
-        let entry = entry.map_err(|e| format!("{}: cannot list: {e}", dir.display()))?;
-        let file_name = entry.file_name();
-        let Some(name) = file_name.to_str() else { continue };
-        if let Some(rest) = name.strip_prefix('.')
-            && let Some((shard, _pid)) = rest.split_once(".tmp-")
-            && shard_of(shard).is_some_and(&wanted)
-        {
-            stale.push(entry.path());
-            continue;
-        }
-        let Some(k) = shard_of(name) else { continue };
-        if k >= shards || !wanted(k) {
-            continue;
-        }
-        let path = entry.path();
+    let store::Listing { items, stale } = store::list(dir, shard_of, shards, &wanted)?;
+    for (k, _, path) in items {
         let records = check_shard(&path, s, range(k, size, n))?;
         let have: std::collections::HashSet<u64> = records.iter().map(|r| r.index).collect();
         existing.missing.extend(range(k, size, n).filter(|i| !have.contains(i)));

@@ -325,6 +325,40 @@ pub fn parse_info(text: &str, show: &dyn std::fmt::Display, s: &Settings, index:
     Ok(Record { index, accepted: Some(accepted), rejections })
 }
 
+/// The entries of a dataset folder, found by [`list`].
+pub struct Listing {
+    /// `(index, file name, path)` of the entries of this run, in listing order.
+    pub items: Vec<(u64, String, PathBuf)>,
+    /// Temporaries `.<name>.tmp-PID` of this run's entries, left by interrupted runs.
+    pub stale: Vec<PathBuf>,
+}
+
+/// List `dir`: the entries whose name `parse` reads as an index below `limit` that
+/// `wanted` keeps (sample folders or shards), and the stale temporaries of such
+/// entries. Other entries are passed over.
+pub fn list(dir: &Path, parse: impl Fn(&str) -> Option<u64>, limit: u64, wanted: impl Fn(u64) -> bool) -> Result<Listing, String> {
+    let mut listing = Listing { items: Vec::new(), stale: Vec::new() };
+    let entries = fs::read_dir(dir).map_err(|e| format!("{}: cannot list: {e}", dir.display()))?;
+    for entry in entries {
+        let entry = entry.map_err(|e| format!("{}: cannot list: {e}", dir.display()))?;
+        let file_name = entry.file_name();
+        let Some(name) = file_name.to_str() else { continue };
+        if let Some(rest) = name.strip_prefix('.')
+            && let Some((item, _pid)) = rest.split_once(".tmp-")
+            && parse(item).is_some_and(&wanted)
+        {
+            listing.stale.push(entry.path());
+            continue;
+        }
+        let Some(index) = parse(name) else { continue };
+        if index >= limit || !wanted(index) {
+            continue;
+        }
+        listing.items.push((index, name.to_string(), entry.path()));
+    }
+    Ok(listing)
+}
+
 /// The sample index of a folder name `rand_NNNNNNN` (digits only).
 pub fn index_of(name: &str) -> Option<u64> {
     let digits = name.strip_prefix("rand_")?;
@@ -349,30 +383,14 @@ pub struct Existing {
 pub fn scan(dir: &Path, s: &Settings, n: u64, wanted: impl Fn(u64) -> bool) -> Result<Existing, String> {
     let mut finished = Vec::new();
     let mut removed_temps = 0;
-    let entries = fs::read_dir(dir).map_err(|e| format!("{}: cannot list: {e}", dir.display()))?;
-    let mut stale: Vec<PathBuf> = Vec::new();
-    for entry in entries {
-        let entry = entry.map_err(|e| format!("{}: cannot list: {e}", dir.display()))?;
-        let file_name = entry.file_name();
-        let Some(name) = file_name.to_str() else { continue };
-        if let Some(rest) = name.strip_prefix('.')
-            && let Some((sample, _pid)) = rest.split_once(".tmp-")
-            && index_of(sample).is_some_and(&wanted)
-        {
-            stale.push(entry.path());
-            continue;
-        }
-        let Some(index) = index_of(name) else { continue };
-        if index >= n || !wanted(index) {
-            continue;
-        }
-        let path = entry.path();
+    let Listing { items, stale } = list(dir, index_of, n, &wanted)?;
+    for (index, name, path) in items {
         let info = path.join(INFO);
         if !info.is_file() {
             return Err(format!("{}: not a sample folder of this tool (no {INFO}); choose another --out", path.display()));
         }
         let record = read_info(&info, s, index)?;
-        for f in s.formats.files(name) {
+        for f in s.formats.files(&name) {
             if !path.join(&f).is_file() {
                 return Err(format!(
                     "{}: has no {f}: the dataset was made with other --formats; resume with the same --formats or choose another --out",
