@@ -73,6 +73,11 @@ impl OutputSet {
         self.files.push((name.to_string(), bytes.into()));
     }
 
+    /// Names of the files, in the order they were added.
+    pub fn names(&self) -> Vec<String> {
+        self.files.iter().map(|(n, _)| n.clone()).collect()
+    }
+
     /// Write the folder `dir` whole: the files go into a temporary sibling folder
     /// that then replaces `dir`. An existing `dir` must hold only files
     /// garmentcode writes ([`OWN_FILES`], the mesh files), unless `force`.

@@ -16,7 +16,7 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
     let built = build(&design, &body, &name).map_err(|e| CliError::Input(format!("{design_label} on {body_label}: {e}")))?;
     let warnings = built.checks.warnings();
     for w in &warnings {
-        eprintln!("warning: {}", garmentcode_cli::explain_warning(w));
+        eprintln!("warning: {}", crate::explain_warning(w));
     }
     if args.strict && !warnings.is_empty() {
         return Err(CliError::Rejected(format!(
@@ -24,26 +24,10 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
             warnings.len()
         )));
     }
-    let mut set = OutputSet::default();
-    set.add("specification.json", built.pattern.to_json().map_err(|e| CliError::Input(e.to_string()))?);
-    let wants = |f: BuildFormat| args.formats.contains(&f);
-    let opts = garmentcode::draw::DrawOptions { layout: args.layout.into(), ..Default::default() };
-    if wants(BuildFormat::Svg) {
-        set.add("pattern.svg", garmentcode::draw::to_svg(&built.pattern, &opts).map_err(|e| CliError::Input(e.to_string()))?);
-    }
-    if wants(BuildFormat::Png) && !args.no_png {
-        set.add("pattern.png", garmentcode::draw::to_png(&built.pattern, &opts).map_err(|e| CliError::Input(e.to_string()))?);
-    }
-    if wants(BuildFormat::Mesh) {
-        let mesh = BoxMesh::new(&built.pattern, args.mesh_resolution)
-            .map_err(|e| CliError::Input(format!("{design_label} on {body_label}: cannot mesh: {e}")))?;
-        for (file, bytes) in mesh.files() {
-            set.add(&file, bytes);
-        }
-    }
-    set.add("design_params.yaml", write_design(&design, &Design::design_space()));
-    set.add("body_measurements.yaml", body.to_yaml());
-    set.add("checks.json", built.checks.to_json());
+    let wanted: Vec<BuildFormat> = args.formats.iter().copied().filter(|&f| !(f == BuildFormat::Png && args.no_png)).collect();
+    let origin = Origin { design: &design, body: &body, checks: &built.checks };
+    let set = files(&built.pattern, Some(origin), &wanted, args.layout.into(), args.mesh_resolution)
+        .map_err(|e| CliError::Input(format!("{design_label} on {body_label}: {e}")))?;
     write_folder(&set, &args.out, args.force)?;
     eprintln!(
         "wrote {}: {} panels, {} stitches ({design_label} on {body_label})",
@@ -52,4 +36,49 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
         built.pattern.stitches.len()
     );
     Ok(0)
+}
+
+/// What a built pattern was made of, for the files that record it.
+#[derive(Clone, Copy)]
+pub struct Origin<'a> {
+    /// The design.
+    pub design: &'a Design,
+    /// The body.
+    pub body: &'a garmentcode::Body,
+    /// The validity checks of the build.
+    pub checks: &'a garments::build::Checks,
+}
+
+/// The files `build` writes for a pattern, in the asked formats: the specification,
+/// the drawings, the mesh files, and (for a pattern built here, with its `origin`)
+/// the design, the body and the checks. An error says what failed (the caller names
+/// the design).
+pub fn files(
+    pattern: &garmentcode::Pattern,
+    origin: Option<Origin>,
+    formats: &[BuildFormat],
+    layout: garmentcode::draw::Layout,
+    mesh_resolution: f64,
+) -> Result<OutputSet, String> {
+    let mut set = OutputSet::default();
+    set.add("specification.json", pattern.to_json().map_err(|e| e.to_string())?);
+    let opts = garmentcode::draw::DrawOptions { layout, ..Default::default() };
+    if formats.contains(&BuildFormat::Svg) {
+        set.add("pattern.svg", garmentcode::draw::to_svg(pattern, &opts).map_err(|e| e.to_string())?);
+    }
+    if formats.contains(&BuildFormat::Png) {
+        set.add("pattern.png", garmentcode::draw::to_png(pattern, &opts).map_err(|e| e.to_string())?);
+    }
+    if formats.contains(&BuildFormat::Mesh) {
+        let mesh = BoxMesh::new(pattern, mesh_resolution).map_err(|e| format!("cannot mesh: {e}"))?;
+        for (file, bytes) in mesh.files() {
+            set.add(&file, bytes);
+        }
+    }
+    if let Some(o) = origin {
+        set.add("design_params.yaml", write_design(o.design, &Design::design_space()));
+        set.add("body_measurements.yaml", o.body.to_yaml());
+        set.add("checks.json", o.checks.to_json());
+    }
+    Ok(set)
 }

@@ -32,7 +32,8 @@ pub fn run(args: CheckArgs) -> Result<i32, CliError> {
     Ok(if errors > 0 || (args.strict && strict_failures > 0) { 1 } else { 0 })
 }
 
-fn problem_json(p: &Problem) -> serde_json::Value {
+/// A structural problem as `check --format json` lists it.
+pub fn problem_json(p: &Problem) -> serde_json::Value {
     json!({
         "kind": p.kind.as_str(),
         "severity": match p.severity { Severity::Error => "error", Severity::Warning => "warning" },

@@ -2,7 +2,7 @@
 
 use crate::cli::ServeArgs;
 use crate::commands::CliError;
-use garmentcode_cli::web::{http::Limits, server};
+use crate::web::{http::Limits, server};
 
 pub fn run(args: ServeArgs) -> Result<i32, CliError> {
     let (host, port) = (args.host.as_str(), args.port);

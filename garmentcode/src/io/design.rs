@@ -65,6 +65,36 @@ fn walk(node: &Node, prefix: &str, space: &DesignSpace, values: &mut [(String, V
     }
 }
 
+/// Read a design given as `(path, value)` pairs (a program's flat mapping rather
+/// than a file), checked as [`read_design_values`] checks a file's values: unknown
+/// paths (with a suggestion), types and ranges, all problems at once; parameters
+/// not given take their default. `source` names the design in errors.
+pub fn read_design_pairs<D: Params>(pairs: &[(String, Value)], source: &str, space: &DesignSpace) -> Result<D, DesignError> {
+    let mut values: Vec<(String, Value)> = space.params().iter().map(|p| (p.path.clone(), p.default.clone())).collect();
+    let mut problems = Vec::new();
+    for (path, value) in pairs {
+        match (space.get(path), space.index_of(path)) {
+            (Some(spec), Some(i)) => match spec.check(value) {
+                Ok(checked) => values[i].1 = checked,
+                Err(e) => problems.push(format!("design.{path}: {e}")),
+            },
+            _ => {
+                let hint = (problems.len() < MAX_SHOWN)
+                    .then(|| suggestion(path, space))
+                    .flatten()
+                    .map(|s| format!(" (did you mean design.{s}?)"))
+                    .unwrap_or_default();
+                let what = if space.is_group(path) { "a group of parameters, not a parameter" } else { "unknown parameter" };
+                problems.push(format!("design.{path}: {what}{hint}"));
+            }
+        }
+    }
+    if !problems.is_empty() {
+        return Err(DesignError { file: source.to_string(), problems });
+    }
+    from_values(&values, source)
+}
+
 /// The closest known path, for typos.
 fn suggestion(path: &str, space: &DesignSpace) -> Option<String> {
     let mut best: Option<(usize, &str)> = None;

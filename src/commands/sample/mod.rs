@@ -143,7 +143,7 @@ fn parse_formats(s: &str) -> Result<Formats, CliError> {
 }
 
 /// The design space: the built-in one, or a design file's ranges and probabilities.
-fn load_space(file: Option<&str>) -> Result<(garmentcode::DesignSpace, String), CliError> {
+pub fn load_space(file: Option<&str>) -> Result<(garmentcode::DesignSpace, String), CliError> {
     let base = Design::design_space();
     let Some(file) = file else { return Ok((base, "built-in".into())) };
     let text = std::fs::read_to_string(file).map_err(|e| CliError::Input(format!("{file}: cannot read the design space: {e}")))?;
@@ -155,7 +155,7 @@ fn load_space(file: Option<&str>) -> Result<(garmentcode::DesignSpace, String), 
 /// Bodies: built-in names or body files separated by commas, or a folder of body
 /// files (`*.yaml`, or those in its `measurements/` folder as in GarmentCodeData's
 /// body samples), sorted by name. A body's name is its built-in name or file stem.
-fn load_bodies(arg: Option<&str>) -> Result<Vec<NamedBody>, CliError> {
+pub fn load_bodies(arg: Option<&str>) -> Result<Vec<NamedBody>, CliError> {
     let arg = arg.unwrap_or(garments::builtin::DEFAULT_BODY);
     let mut files: Vec<String> = Vec::new();
     let dir = Path::new(arg);
@@ -215,7 +215,20 @@ fn prepare_out(dir: &Path) -> Result<(), CliError> {
     std::fs::remove_file(&probe).map_err(fail)
 }
 
+/// How a run reports its progress to a caller: called on the calling thread with
+/// the samples made so far and the samples to make, a few times a second and once
+/// at the end; an error stops the run (after the samples in progress) with that
+/// message.
+pub type Report<'a> = &'a mut dyn FnMut(u64, u64) -> Result<(), String>;
+
+/// `garmentcode sample`, with progress drawn on stderr.
 pub fn run(args: SampleArgs) -> Result<i32, CliError> {
+    run_reporting(args, None)
+}
+
+/// `garmentcode sample`, with progress given to `report` (instead of drawn on
+/// stderr) when there is one: the Python package's `sample_dataset`.
+pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32, CliError> {
     if !args.unpack.is_empty() {
         return unpack(&args.unpack, &args.out);
     }
@@ -255,7 +268,7 @@ pub fn run(args: SampleArgs) -> Result<i32, CliError> {
                 made.push(record);
                 Ok(())
             };
-            pool(jobs, slots, todo, index_of, work, collect)?;
+            pool(jobs, slots, todo, index_of, work, collect, report.take())?;
             (made, existing.finished, jobs)
         }
         Layout::Shards(size) => {
@@ -307,7 +320,7 @@ pub fn run(args: SampleArgs) -> Result<i32, CliError> {
                 }
                 Ok(())
             };
-            pool(jobs, slots, todo, index_of, work, collect)?;
+            pool(jobs, slots, todo, index_of, work, collect, report.take())?;
             (made, finished, jobs)
         }
     };
@@ -362,7 +375,8 @@ pub fn run(args: SampleArgs) -> Result<i32, CliError> {
 /// Run `work` over `jobs` threads on the sample indices of `slots` slots
 /// (`index_of` gives a slot's index, `None` to skip it), handing each result to
 /// `collect` on this thread. Stops at the first error, after the samples in
-/// progress. `todo` is the number of samples, for the progress line.
+/// progress. `todo` is the number of samples, for the progress line (or for
+/// `report`, which replaces it).
 fn pool<T: Send>(
     jobs: usize,
     slots: u64,
@@ -370,12 +384,14 @@ fn pool<T: Send>(
     index_of: impl Fn(u64) -> Option<u64> + Sync,
     work: impl Fn(&mut Arena, u64) -> Result<T, String> + Sync,
     mut collect: impl FnMut(T) -> Result<(), String>,
+    mut report: Option<Report>,
 ) -> Result<(), CliError> {
     let next = AtomicU64::new(0);
     let stop = AtomicBool::new(false);
     let (tx, rx) = mpsc::channel::<Result<T, String>>();
     let mut error: Option<String> = None;
     let mut progress = progress::Progress::new(todo);
+    let mut done_count = 0u64;
     let collector = std::thread::current();
     let running = AtomicUsize::new(jobs);
     std::thread::scope(|scope| {
@@ -429,6 +445,7 @@ fn pool<T: Send>(
                             error = Some(e);
                         }
                         progress.inc();
+                        done_count += 1;
                     }
                     Ok(Err(e)) => {
                         error.get_or_insert(e);
@@ -440,10 +457,25 @@ fn pool<T: Send>(
                     }
                 }
             }
-            progress.tick();
+            match report.as_mut() {
+                Some(report) => {
+                    if let Err(e) = report(done_count, todo) {
+                        stop.store(true, Ordering::Relaxed);
+                        error.get_or_insert(e);
+                    }
+                }
+                None => progress.tick(),
+            }
         }
     });
-    progress.finish();
+    match report {
+        Some(report) => {
+            if let Err(e) = report(done_count, todo) {
+                error.get_or_insert(e);
+            }
+        }
+        None => progress.finish(),
+    }
     match error {
         Some(e) => Err(CliError::Failed(format!("{e}\nstopped; the samples written so far are complete, rerun to resume"))),
         None => Ok(()),

@@ -1,0 +1,1058 @@
+//! `garmentcode._native`: the compiled part of the Python package `garmentcode`.
+//!
+//! Every operation calls the library crates or the command-line tool's own code
+//! (`garmentcode_cli`): designs and bodies are loaded as `garmentcode build` loads
+//! them, files are prepared by the same functions, and `sample_dataset` is
+//! `garmentcode sample`, so what Python writes is what the CLI writes, byte for
+//! byte, and errors carry the CLI's messages. The Python side (`garmentcode/*.py`)
+//! re-exports these names and adds the pure-Python parts (the pygarment
+//! compatibility layer, the shard reader).
+
+use garmentcode::io::{read_design, read_design_pairs, write_design};
+use garmentcode::mesh::{BoxMesh, VertexLabel};
+use garmentcode::{Kind, Params, Range, Value};
+use garmentcode_cli::cli::{BuildFormat, SampleArgs};
+use garmentcode_cli::commands::{self, CliError, build as build_cmd, sample as sample_cmd};
+use garments::Design;
+use garments::sample::{DatasetSampler, Outcome};
+use pyo3::IntoPyObjectExt;
+use pyo3::create_exception;
+use pyo3::exceptions::{PyKeyError, PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyBytes, PyDict, PyList, PyString, PyTuple};
+use std::path::PathBuf;
+
+/// mimalloc, as in the command-line tool: building a garment makes and frees
+/// thousands of small vectors.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
+create_exception!(
+    garmentcode,
+    DesignError,
+    PyValueError,
+    "A design that is not valid: unknown parameters, values of the wrong type or out of range."
+);
+create_exception!(garmentcode, BodyError, PyValueError, "A body that is not valid: unknown or missing measurements, implausible values.");
+create_exception!(garmentcode, BuildError, PyValueError, "A valid design whose garment cannot be built on the body (or is empty).");
+create_exception!(
+    garmentcode,
+    PatternError,
+    PyValueError,
+    "A specification (pattern JSON) that cannot be read, or a pattern that cannot be drawn or meshed."
+);
+create_exception!(garmentcode, InputError, PyValueError, "Other invalid input: bad options, unreadable or unwritable files and folders.");
+create_exception!(garmentcode, DatasetError, PyRuntimeError, "Dataset generation stopped: a sample failed, or it was interrupted.");
+
+/// A CLI error as a Python exception: bad input as `InputError` (a `ValueError`),
+/// a stopped or failed run as `DatasetError`.
+fn cli_err(e: CliError) -> PyErr {
+    match e {
+        CliError::Usage(m) | CliError::Input(m) => InputError::new_err(m),
+        CliError::Rejected(m) | CliError::Failed(m) => DatasetError::new_err(m),
+    }
+}
+
+/// The message of a CLI error.
+fn cli_message(e: CliError) -> String {
+    match e {
+        CliError::Usage(m) | CliError::Input(m) | CliError::Rejected(m) | CliError::Failed(m) => m,
+    }
+}
+
+/// A parameter value as a Python object.
+fn value_to_py<'py>(py: Python<'py>, v: &Value) -> PyResult<Bound<'py, PyAny>> {
+    match v {
+        Value::Null => Ok(py.None().into_bound(py)),
+        Value::Bool(b) => b.into_bound_py_any(py),
+        Value::Int(i) => i.into_bound_py_any(py),
+        Value::Float(x) => x.into_bound_py_any(py),
+        Value::Str(s) => s.into_bound_py_any(py),
+    }
+}
+
+/// A Python object as a parameter value (`None`, bool, int, float or str).
+fn value_from_py(path: &str, o: &Bound<'_, PyAny>) -> PyResult<Value> {
+    if o.is_none() {
+        return Ok(Value::Null);
+    }
+    // bool before int: Python's bool is an int.
+    if let Ok(b) = o.cast::<pyo3::types::PyBool>() {
+        return Ok(Value::Bool(b.is_true()));
+    }
+    if let Ok(i) = o.extract::<i64>() {
+        return Ok(Value::Int(i));
+    }
+    if let Ok(x) = o.extract::<f64>() {
+        return Ok(Value::Float(x));
+    }
+    if let Ok(s) = o.extract::<String>() {
+        return Ok(Value::Str(s));
+    }
+    let type_name = o.get_type().name().map(|n| n.to_string()).unwrap_or_default();
+    Err(DesignError::new_err(format!("<dict>: design.{path}: expected a single value (number, bool, string or None), got a {type_name}")))
+}
+
+/// Walk a design mapping into `(path, value)` pairs. A mapping with a `v` key is a
+/// parameter (the reference's layout, other keys such as `range` ignored); another
+/// mapping is a group; anything else is a value. Keys may be dotted paths, and a
+/// top-level `design` key is the design itself (a loaded design file).
+fn flatten(prefix: &str, d: &Bound<'_, PyDict>, out: &mut Vec<(String, Value)>) -> PyResult<()> {
+    for (k, v) in d.iter() {
+        let Ok(key) = k.extract::<String>() else {
+            return Err(DesignError::new_err(format!("<dict>: design.{prefix}: keys must be strings, got {}", k.repr()?)));
+        };
+        let path = garmentcode::join_path(prefix, &key);
+        if prefix.is_empty() && key == "design" && v.is_instance_of::<PyDict>() {
+            flatten("", v.cast::<PyDict>()?, out)?;
+        } else if let Ok(group) = v.cast::<PyDict>() {
+            match group.get_item("v")? {
+                Some(leaf) => out.push((path.clone(), value_from_py(&path, &leaf)?)),
+                None => flatten(&path, group, out)?,
+            }
+        } else {
+            out.push((path.clone(), value_from_py(&path, &v)?));
+        }
+    }
+    Ok(())
+}
+
+/// A design from Python: a mapping (nested as the reference's design files, or
+/// flat `{path: value}`), YAML text, or a built-in name or design file path. Also
+/// the label the CLI would name it by.
+fn load_design(o: &Bound<'_, PyAny>, space: &garmentcode::DesignSpace) -> PyResult<(Design, String)> {
+    if let Ok(d) = o.cast::<PyDict>() {
+        let mut pairs = Vec::new();
+        flatten("", d, &mut pairs)?;
+        let design = read_design_pairs(&pairs, "<dict>", space).map_err(|e| DesignError::new_err(e.to_string()))?;
+        return Ok((design, "design".into()));
+    }
+    let text = path_or_str(o)
+        .map_err(|_| DesignError::new_err("a design is a dict, YAML text, a built-in design name or a design file path".to_string()))?;
+    if text.contains('\n') {
+        let design = read_design(&text, "<text>", space).map_err(|e| DesignError::new_err(e.to_string()))?;
+        return Ok((design, "design".into()));
+    }
+    commands::load_design(&text).map_err(|e| DesignError::new_err(cli_message(e)))
+}
+
+/// A `str` or an `os.PathLike` as a string.
+fn path_or_str(o: &Bound<'_, PyAny>) -> PyResult<String> {
+    if let Ok(s) = o.extract::<String>() {
+        return Ok(s);
+    }
+    let p: PathBuf = o.extract()?;
+    Ok(p.to_string_lossy().into_owned())
+}
+
+/// A design's values as a flat `{path: value}` dict, in the space's order.
+fn design_dict<'py>(py: Python<'py>, design: &Design, space: &garmentcode::DesignSpace) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    for p in space.params() {
+        let keys: Vec<&str> = p.path.split('.').collect();
+        let v = design.get_value(&keys).unwrap_or_else(|| p.default.clone());
+        d.set_item(&p.path, value_to_py(py, &v)?)?;
+    }
+    Ok(d)
+}
+
+/// Body measurements: a built-in body (`Body("mean_all")`), a body file
+/// (`Body("path/to/body.yaml")`), or `Body.from_yaml` / `Body.from_dict`.
+#[pyclass(module = "garmentcode", name = "Body", frozen)]
+#[derive(Clone)]
+struct PyBody {
+    body: garmentcode::Body,
+    name: String,
+}
+
+#[pymethods]
+impl PyBody {
+    /// A built-in body by name, or a body file (YAML with a `body:` mapping).
+    #[new]
+    #[pyo3(signature = (source = None))]
+    fn new(source: Option<&Bound<'_, PyAny>>) -> PyResult<PyBody> {
+        let arg = match source {
+            None => garments::builtin::DEFAULT_BODY.to_string(),
+            Some(o) => {
+                if let Ok(d) = o.cast::<PyDict>() {
+                    return PyBody::from_dict(d);
+                }
+                path_or_str(o).map_err(|_| BodyError::new_err("a body is a built-in body name, a body file path or a dict"))?
+            }
+        };
+        let (body, label) = commands::load_body(&arg).map_err(|e| BodyError::new_err(cli_message(e)))?;
+        let name = if garments::builtin::body(&label).is_some() { label } else { stem(&label) };
+        Ok(PyBody { body, name })
+    }
+
+    /// Names of the built-in bodies.
+    #[staticmethod]
+    fn builtin() -> Vec<&'static str> {
+        garments::builtin::BODIES.iter().map(|(n, _)| *n).collect()
+    }
+
+    /// A body from the text of a body file.
+    #[staticmethod]
+    #[pyo3(signature = (text, name = "body".to_string()))]
+    fn from_yaml(text: &str, name: String) -> PyResult<PyBody> {
+        let body = garmentcode::Body::from_yaml(text, "<text>").map_err(|e| BodyError::new_err(e.to_string()))?;
+        Ok(PyBody { body, name })
+    }
+
+    /// A body from a `{measurement: value}` dict (the `body:` mapping of a body
+    /// file; derived `_` values are ignored and recomputed).
+    #[staticmethod]
+    fn from_dict(d: &Bound<'_, PyDict>) -> PyResult<PyBody> {
+        let d = match d.get_item("body")? {
+            Some(inner) => {
+                inner.cast_into::<PyDict>().map_err(|_| BodyError::new_err("<dict>: `body` must be a mapping of measurements"))?
+            }
+            None => d.clone(),
+        };
+        let mut text = String::from("body:\n");
+        for (k, v) in d.iter() {
+            let key: String = k.extract().map_err(|_| BodyError::new_err("<dict>: measurement names must be strings"))?;
+            if key.contains([':', '\n', '#']) {
+                return Err(BodyError::new_err(format!("<dict>: unknown measurement `{key}`")));
+            }
+            let value = if key == "body_sample" {
+                let s: String = v.extract().map_err(|_| BodyError::new_err("<dict>: body.body_sample: expected a string"))?;
+                format!("'{}'", s.replace('\'', "''"))
+            } else {
+                match v.extract::<f64>() {
+                    Ok(x) => format!("{}", Value::Float(x)),
+                    Err(_) => return Err(BodyError::new_err(format!("<dict>: body.{key}: expected a number, got {}", v.repr()?))),
+                }
+            };
+            text.push_str(&format!("  {key}: {value}\n"));
+        }
+        let body = garmentcode::Body::from_yaml(&text, "<dict>").map_err(|e| BodyError::new_err(e.to_string()))?;
+        Ok(PyBody { body, name: "body".into() })
+    }
+
+    /// The body's name: its built-in name or file stem.
+    #[getter]
+    fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The raw measurements, `{name: value}` (cm, angles in degrees).
+    #[getter]
+    fn measurements<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for name in garmentcode::Body::measurement_names() {
+            if let Some(v) = self.body.get(name) {
+                d.set_item(name, v)?;
+            }
+        }
+        Ok(d)
+    }
+
+    /// The derived values, `{"_name": value}`, as the reference computes them.
+    #[getter]
+    fn derived<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (k, v) in self.body.entries() {
+            if k.starts_with('_') {
+                d.set_item(k, v)?;
+            }
+        }
+        Ok(d)
+    }
+
+    /// What a measurement (raw or `_`-derived) is.
+    #[staticmethod]
+    fn describe(name: &str) -> PyResult<&'static str> {
+        garmentcode::Body::describe_measurement(name).ok_or_else(|| PyKeyError::new_err(name.to_string()))
+    }
+
+    /// The body file (`body_measurements.yaml` layout).
+    fn to_yaml(&self) -> String {
+        self.body.to_yaml()
+    }
+
+    /// Every value, raw and derived, `{name: value}`.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (k, v) in self.body.entries() {
+            d.set_item(k, v)?;
+        }
+        Ok(d)
+    }
+
+    fn __getitem__(&self, name: &str) -> PyResult<f64> {
+        self.body.entries().into_iter().find(|(k, _)| *k == name).map(|(_, v)| v).ok_or_else(|| PyKeyError::new_err(name.to_string()))
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Body({:?})", self.name)
+    }
+}
+
+/// A file path's stem.
+fn stem(path: &str) -> String {
+    std::path::Path::new(path).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| path.to_string())
+}
+
+/// A body from Python: `None` (the default body), a `Body`, a dict, a built-in
+/// name or a body file path.
+fn load_body(o: Option<&Bound<'_, PyAny>>) -> PyResult<PyBody> {
+    match o {
+        Some(o) => match o.cast::<PyBody>() {
+            Ok(b) => Ok(b.get().clone()),
+            Err(_) => PyBody::new(Some(o)),
+        },
+        None => PyBody::new(None),
+    }
+}
+
+/// The design space: every parameter's path, type, range, default, sampling
+/// probability and description. `DesignSpace()` is the built-in one;
+/// `DesignSpace(path)` takes a design file's ranges and probabilities, as
+/// `garmentcode sample --design-space` does.
+#[pyclass(module = "garmentcode", name = "DesignSpace", frozen)]
+struct PyDesignSpace {
+    space: garmentcode::DesignSpace,
+    /// The design file, or `None` for the built-in space.
+    source: Option<String>,
+}
+
+/// One slot of the vector encoding.
+enum Slot<'a> {
+    /// `(x - lo) / (hi - lo)` of a number.
+    Number { lo: f64, hi: f64, int: bool },
+    /// 0 or 1.
+    Flag,
+    /// One-hot slot of an option.
+    Option(&'a Value),
+}
+
+impl PyDesignSpace {
+    /// The encoding's slots, each with its parameter index.
+    fn slots(&self) -> Vec<(usize, Slot<'_>)> {
+        let mut out = Vec::new();
+        for (i, p) in self.space.params().iter().enumerate() {
+            match (&p.kind, &p.range) {
+                (Kind::Float | Kind::Int, Range::Numeric { lo, hi }) => {
+                    out.push((i, Slot::Number { lo: *lo, hi: *hi, int: p.kind == Kind::Int }))
+                }
+                (Kind::Bool, _) => out.push((i, Slot::Flag)),
+                (_, Range::Options(opts)) => {
+                    out.extend(opts.iter().map(|o| (i, Slot::Option(o))));
+                    if p.kind == Kind::SelectNull && !opts.contains(&Value::Null) {
+                        out.push((i, Slot::Option(&Value::Null)));
+                    }
+                }
+                (_, Range::Numeric { .. }) => {}
+            }
+        }
+        out
+    }
+}
+
+#[pymethods]
+impl PyDesignSpace {
+    /// The built-in design space, or the one of a design file (its ranges and
+    /// probabilities replace the built-in ones).
+    #[new]
+    #[pyo3(signature = (path = None))]
+    fn new(path: Option<&Bound<'_, PyAny>>) -> PyResult<PyDesignSpace> {
+        let source = path.map(path_or_str).transpose()?;
+        let (space, _) = sample_cmd::load_space(source.as_deref()).map_err(|e| DesignError::new_err(cli_message(e)))?;
+        Ok(PyDesignSpace { space, source })
+    }
+
+    /// The design file this space comes from (`None`: built-in).
+    #[getter]
+    fn source(&self) -> Option<&str> {
+        self.source.as_deref()
+    }
+
+    /// Every parameter as a dict: `path`, `type` (float, int, bool, select,
+    /// select_null), `range` (`(lo, hi)` or a list of options), `default`,
+    /// `default_prob` and `description`.
+    #[getter]
+    fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        let list = PyList::empty(py);
+        for p in self.space.params() {
+            let d = PyDict::new(py);
+            d.set_item("path", &p.path)?;
+            d.set_item("type", p.kind.as_str())?;
+            match &p.range {
+                Range::Numeric { lo, hi } => d.set_item("range", (lo, hi))?,
+                Range::Options(opts) => {
+                    let opts: Vec<Bound<'py, PyAny>> = opts.iter().map(|o| value_to_py(py, o)).collect::<PyResult<_>>()?;
+                    d.set_item("range", opts)?
+                }
+            }
+            d.set_item("default", value_to_py(py, &p.default)?)?;
+            d.set_item("default_prob", p.default_prob)?;
+            d.set_item("description", &p.description)?;
+            list.append(d)?;
+        }
+        Ok(list)
+    }
+
+    /// The parameter paths, in order.
+    #[getter]
+    fn paths(&self) -> Vec<String> {
+        self.space.params().iter().map(|p| p.path.clone()).collect()
+    }
+
+    /// The default design: every parameter at its default, `{path: value}`.
+    fn default<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for p in self.space.params() {
+            d.set_item(&p.path, value_to_py(py, &p.default)?)?;
+        }
+        Ok(d)
+    }
+
+    /// Check a design (any form `build` accepts) against this space: its complete
+    /// values `{path: value}`, or `DesignError` listing every problem.
+    fn validate<'py>(&self, py: Python<'py>, design: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+        let (d, _) = load_design(design, &self.space)?;
+        design_dict(py, &d, &self.space)
+    }
+
+    /// The design of sample `index` of a dataset with this `seed`, as
+    /// `garmentcode sample` draws it (the first design the filters accept) on
+    /// `bodies` (as `sample_dataset`'s; default the neutral body).
+    #[pyo3(signature = (seed, index, bodies = None))]
+    fn sample<'py>(&self, py: Python<'py>, seed: u64, index: u64, bodies: Option<&Bound<'py, PyAny>>) -> PyResult<Bound<'py, PyDict>> {
+        let bodies = bodies_arg(bodies)?;
+        let bodies = sample_cmd::load_bodies(bodies.as_deref()).map_err(|e| BodyError::new_err(cli_message(e)))?;
+        let sampler = DatasetSampler::new(seed, self.space.clone(), bodies).map_err(|e| DesignError::new_err(e.to_string()))?;
+        match py.detach(|| sampler.draw(index)) {
+            Outcome::Accepted(s) => design_dict(py, &s.design, &self.space),
+            Outcome::Exhausted { .. } => Err(DatasetError::new_err(format!(
+                "{}: every one of {} designs was rejected",
+                garments::sample::sample_name(index),
+                garments::sample::MAX_ATTEMPTS
+            ))),
+        }
+    }
+
+    /// The JSON Schema of a design file's values.
+    fn json_schema<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let text = serde_json::to_string(&self.space.json_schema()).expect("the schema serialises");
+        py.import("json")?.call_method1("loads", (text,))
+    }
+
+    /// A design in the reference's design-file layout (values with ranges,
+    /// types and probabilities); the space's defaults without a design.
+    #[pyo3(signature = (design = None))]
+    fn to_yaml(&self, design: Option<&Bound<'_, PyAny>>) -> PyResult<String> {
+        let d = match design {
+            Some(o) => load_design(o, &self.space)?.0,
+            None => Design::defaults(),
+        };
+        Ok(write_design(&d, &self.space))
+    }
+
+    /// Names of the slots of the vector encoding: `path` for numbers and flags,
+    /// `path=option` for the one-hot slots of choices.
+    fn vector_labels(&self) -> Vec<String> {
+        let params = self.space.params();
+        self.slots()
+            .into_iter()
+            .map(|(i, s)| match s {
+                Slot::Option(o) => format!("{}={o}", params[i].path),
+                _ => params[i].path.clone(),
+            })
+            .collect()
+    }
+
+    /// A design as a flat vector of floats: numbers normalised by their range to
+    /// [0, 1], flags 0 or 1, choices one-hot (a `select_null` choice has a slot
+    /// for `None`). `decode` inverts it.
+    fn encode<'py>(&self, py: Python<'py>, design: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        let (d, _) = load_design(design, &self.space)?;
+        let params = self.space.params();
+        let values: Vec<Value> = params
+            .iter()
+            .map(|p| {
+                let keys: Vec<&str> = p.path.split('.').collect();
+                d.get_value(&keys).unwrap_or_else(|| p.default.clone())
+            })
+            .collect();
+        let v: Vec<f64> = self
+            .slots()
+            .into_iter()
+            .map(|(i, s)| match s {
+                Slot::Number { lo, hi, .. } => {
+                    let x = values[i].as_f64().unwrap_or(lo);
+                    if hi > lo { (x - lo) / (hi - lo) } else { 0.0 }
+                }
+                Slot::Flag => f64::from(u8::from(values[i] == Value::Bool(true))),
+                Slot::Option(o) => f64::from(u8::from(o.loosely_eq(&values[i]))),
+            })
+            .collect();
+        py.import("numpy")?.call_method1("asarray", (v, "float64"))
+    }
+
+    /// The design of a vector (`encode`'s inverse; any vector of the right length
+    /// decodes: numbers are clamped to their range and integers rounded, flags
+    /// are true from 0.5, choices take the largest slot).
+    fn decode<'py>(&self, py: Python<'py>, vector: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+        let v: Vec<f64> = py.import("numpy")?.call_method1("asarray", (vector, "float64"))?.call_method0("tolist")?.extract()?;
+        let slots = self.slots();
+        if v.len() != slots.len() {
+            return Err(PyValueError::new_err(format!(
+                "expected a vector of {} values (see vector_labels()), got {}",
+                slots.len(),
+                v.len()
+            )));
+        }
+        let params = self.space.params();
+        let mut values: Vec<Value> = params.iter().map(|p| p.default.clone()).collect();
+        let mut best: Vec<f64> = vec![f64::NEG_INFINITY; params.len()];
+        for ((i, s), x) in slots.into_iter().zip(v) {
+            match s {
+                Slot::Number { lo, hi, int } => {
+                    let y = (lo + x.clamp(0.0, 1.0) * (hi - lo)).clamp(lo, hi);
+                    values[i] = if int { Value::Int(y.round() as i64) } else { Value::Float(y) };
+                }
+                Slot::Flag => values[i] = Value::Bool(x >= 0.5),
+                Slot::Option(o) => {
+                    if x > best[i] {
+                        best[i] = x;
+                        values[i] = o.clone();
+                    }
+                }
+            }
+        }
+        let d = PyDict::new(py);
+        for (p, v) in params.iter().zip(&values) {
+            d.set_item(&p.path, value_to_py(py, v)?)?;
+        }
+        Ok(d)
+    }
+
+    fn __len__(&self) -> usize {
+        self.space.params().len()
+    }
+
+    fn __repr__(&self) -> String {
+        match &self.source {
+            Some(s) => format!("DesignSpace({s:?}, {} parameters)", self.space.params().len()),
+            None => format!("DesignSpace(built-in, {} parameters)", self.space.params().len()),
+        }
+    }
+}
+
+/// `bodies=` as the CLI's `--bodies`: a string, or a list of names and files.
+fn bodies_arg(o: Option<&Bound<'_, PyAny>>) -> PyResult<Option<String>> {
+    let Some(o) = o else { return Ok(None) };
+    if let Ok(s) = path_or_str(o) {
+        return Ok(Some(s));
+    }
+    let mut items = Vec::new();
+    for item in o.try_iter()? {
+        let item = item?;
+        let s = match item.cast::<PyBody>() {
+            Ok(_) => return Err(InputError::new_err("bodies: give built-in body names or body files (Body objects are not files)")),
+            Err(_) => path_or_str(&item)?,
+        };
+        items.push(s);
+    }
+    Ok(Some(items.join(",")))
+}
+
+/// What a built pattern was made of.
+#[derive(Clone)]
+struct Origin {
+    design: Design,
+    body: PyBody,
+    checks: garments::build::Checks,
+}
+
+/// A sewing pattern: built by `garmentcode.build`, or read by `Pattern.from_json`.
+#[pyclass(module = "garmentcode", name = "Pattern", frozen)]
+struct PyPattern {
+    pattern: garmentcode::Pattern,
+    origin: Option<Origin>,
+}
+
+/// `"placed"` or `"flat"`.
+fn layout(s: &str) -> PyResult<garmentcode::draw::Layout> {
+    match s {
+        "placed" => Ok(garmentcode::draw::Layout::Placed),
+        "flat" => Ok(garmentcode::draw::Layout::Flat),
+        _ => Err(PyValueError::new_err(format!("layout: expected 'placed' or 'flat', got '{s}'"))),
+    }
+}
+
+#[pymethods]
+impl PyPattern {
+    /// Read a specification: JSON text, or the path of a `specification.json`
+    /// (any the reference writes).
+    #[staticmethod]
+    fn from_json(source: &Bound<'_, PyAny>) -> PyResult<PyPattern> {
+        let s = path_or_str(source)?;
+        let pattern = if s.trim_start().starts_with('{') {
+            garmentcode::Pattern::from_json(&s).map_err(|e| PatternError::new_err(format!("<text>: {e}")))?
+        } else {
+            let mut p = commands::read_pattern(&s).map_err(|e| PatternError::new_err(cli_message(e)))?;
+            p.name = spec_name(&s);
+            p
+        };
+        Ok(PyPattern { pattern, origin: None })
+    }
+
+    /// The pattern's name (the garment's name; a file's folder or prefix).
+    #[getter]
+    fn name(&self) -> &str {
+        &self.pattern.name
+    }
+
+    /// The specification as a dict (`json.loads(pattern.to_json())`).
+    #[getter]
+    fn spec<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        py.import("json")?.call_method1("loads", (self.to_json()?,))
+    }
+
+    /// The specification file's text (`specification.json`, as the CLI writes it).
+    fn to_json(&self) -> PyResult<String> {
+        self.pattern.to_json().map_err(|e| PatternError::new_err(e.to_string()))
+    }
+
+    /// The drawing as SVG text (`pattern.svg`); layout `"placed"` or `"flat"`.
+    #[pyo3(signature = (layout = "placed"))]
+    fn svg(&self, py: Python<'_>, layout: &str) -> PyResult<String> {
+        let opts = garmentcode::draw::DrawOptions { layout: self::layout(layout)?, ..Default::default() };
+        py.detach(|| garmentcode::draw::to_svg(&self.pattern, &opts)).map_err(|e| PatternError::new_err(e.to_string()))
+    }
+
+    /// The drawing as PNG bytes (`pattern.png`); layout `"placed"` or `"flat"`.
+    #[pyo3(signature = (layout = "placed"))]
+    fn png<'py>(&self, py: Python<'py>, layout: &str) -> PyResult<Bound<'py, PyBytes>> {
+        let opts = garmentcode::draw::DrawOptions { layout: self::layout(layout)?, ..Default::default() };
+        let bytes = py.detach(|| garmentcode::draw::to_png(&self.pattern, &opts)).map_err(|e| PatternError::new_err(e.to_string()))?;
+        Ok(PyBytes::new(py, &bytes))
+    }
+
+    /// The reference's validity checks of a built garment (`checks.json` plus
+    /// `passed` and readable `warnings`); `None` for a pattern read from a file.
+    #[getter]
+    fn checks<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        let Some(o) = &self.origin else { return Ok(None) };
+        let d = py.import("json")?.call_method1("loads", (o.checks.to_json(),))?;
+        d.set_item("passed", o.checks.passed())?;
+        d.set_item("warnings", o.checks.warnings())?;
+        Ok(Some(d))
+    }
+
+    /// Structural problems of the pattern, as `garmentcode check --format json`
+    /// lists them (`kind`, `severity`, `panel`, `edge`, `stitch`, `ratio`,
+    /// `message`).
+    fn problems<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let list: Vec<serde_json::Value> = garmentcode::validate(&self.pattern).iter().map(commands::check::problem_json).collect();
+        py.import("json")?.call_method1("loads", (serde_json::to_string(&list).expect("problems serialise"),))
+    }
+
+    /// Panel names, in file order.
+    #[getter]
+    fn panels(&self) -> Vec<String> {
+        self.pattern.panels.iter().map(|p| p.name.clone()).collect()
+    }
+
+    /// Stitches as `((panel, edge), (panel, edge))`.
+    #[getter]
+    fn stitches(&self) -> Vec<((String, usize), (String, usize))> {
+        self.pattern
+            .stitches
+            .iter()
+            .map(|s| ((s.sides[0].panel.clone(), s.sides[0].edge), (s.sides[1].panel.clone(), s.sides[1].edge)))
+            .collect()
+    }
+
+    /// The design it was built from, `{path: value}` (`None` if read from a file).
+    #[getter]
+    fn design<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        self.origin.as_ref().map(|o| design_dict(py, &o.design, &Design::design_space())).transpose()
+    }
+
+    /// The body it was built on (`None` if read from a file).
+    #[getter]
+    fn body(&self) -> Option<PyBody> {
+        self.origin.as_ref().map(|o| o.body.clone())
+    }
+
+    /// The simulation box mesh at `resolution` cm (as `garmentcode mesh`).
+    #[pyo3(signature = (resolution = 1.0))]
+    fn mesh(&self, py: Python<'_>, resolution: f64) -> PyResult<PyMesh> {
+        let mesh = py
+            .detach(|| BoxMesh::new(&self.pattern, resolution))
+            .map_err(|e| PatternError::new_err(format!("{}: cannot mesh: {e}", self.pattern.name)))?;
+        Ok(PyMesh { mesh })
+    }
+
+    /// Write the pattern's files into the folder `out`, as `garmentcode build`
+    /// does: `specification.json` (always), `pattern.svg`, `pattern.png` and the
+    /// mesh files for the formats `svg`, `png`, `mesh`, and for a built pattern
+    /// `design_params.yaml`, `body_measurements.yaml`, `checks.json`. The folder
+    /// is replaced whole; one holding other files needs `force=True`. Returns the
+    /// names of the files written.
+    #[pyo3(signature = (out, formats = vec!["json".to_string(), "svg".to_string(), "png".to_string()], layout = "placed", mesh_resolution = 1.0, force = false))]
+    fn write(
+        &self,
+        py: Python<'_>,
+        out: &Bound<'_, PyAny>,
+        formats: Vec<String>,
+        layout: &str,
+        mesh_resolution: f64,
+        force: bool,
+    ) -> PyResult<Vec<String>> {
+        let out = PathBuf::from(path_or_str(out)?);
+        let mut wanted = Vec::new();
+        for f in &formats {
+            wanted.push(match f.as_str() {
+                "json" => BuildFormat::Json,
+                "svg" => BuildFormat::Svg,
+                "png" => BuildFormat::Png,
+                "mesh" => BuildFormat::Mesh,
+                _ => return Err(PyValueError::new_err(format!("formats: unknown format '{f}' (expected a list of json, svg, png, mesh)"))),
+            });
+        }
+        let layout = self::layout(layout)?;
+        let origin = self.origin.as_ref().map(|o| build_cmd::Origin { design: &o.design, body: &o.body.body, checks: &o.checks });
+        py.detach(|| {
+            let set = build_cmd::files(&self.pattern, origin, &wanted, layout, mesh_resolution)
+                .map_err(|e| PatternError::new_err(format!("{}: {e}", self.pattern.name)))?;
+            commands::write_folder(&set, &out, force).map_err(cli_err)?;
+            Ok(set.names())
+        })
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Pattern({:?}, {} panels, {} stitches)", self.pattern.name, self.pattern.panels.len(), self.pattern.stitches.len())
+    }
+}
+
+/// A pattern's name from its file: `NAME_specification.json` gives `NAME`, a
+/// plain `specification.json` its folder's name.
+fn spec_name(path: &str) -> String {
+    let p = std::path::Path::new(path);
+    let stem = stem(path);
+    if let Some(n) = stem.strip_suffix("_specification").filter(|n| !n.is_empty()) {
+        return n.to_string();
+    }
+    let folder =
+        std::fs::canonicalize(p).ok().and_then(|p| p.parent().and_then(|d| d.file_name()).map(|n| n.to_string_lossy().into_owned()));
+    folder.unwrap_or(stem)
+}
+
+/// The simulation box mesh of a pattern, with its arrays as numpy arrays.
+#[pyclass(module = "garmentcode", name = "Mesh", frozen)]
+struct PyMesh {
+    mesh: BoxMesh,
+}
+
+/// A numpy array of `values` with `shape`.
+fn array<'py, T: Copy + IntoPyObjectExt<'py>>(
+    py: Python<'py>,
+    values: Vec<T>,
+    dtype: &str,
+    shape: (usize, usize),
+) -> PyResult<Bound<'py, PyAny>> {
+    let np = py.import("numpy")?;
+    let a = np.call_method1("asarray", (values, dtype))?;
+    if shape.1 == 0 { Ok(a) } else { a.call_method1("reshape", ((shape.0, shape.1),)) }
+}
+
+#[pymethods]
+impl PyMesh {
+    /// Vertex positions, `(V, 3)` float64, cm: the merged stitch vertices first.
+    #[getter]
+    fn vertices<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let v: Vec<f64> = self.mesh.vertices.iter().flat_map(|p| [p.x, p.y, p.z]).collect();
+        array(py, v, "float64", (self.mesh.vertices.len(), 3))
+    }
+
+    /// Triangles, `(F, 3)` int64 vertex ids.
+    #[getter]
+    fn faces<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let f: Vec<i64> = self.mesh.faces.iter().flat_map(|f| f.vertices.map(|i| i as i64)).collect();
+        array(py, f, "int64", (self.mesh.faces.len(), 3))
+    }
+
+    /// Texture coordinates, `(T, 2)` float64 (cm from each panel's corner).
+    #[getter]
+    fn uvs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let t = self.mesh.texture_coordinates();
+        let v: Vec<f64> = t.iter().flat_map(|p| [p.x, p.y]).collect();
+        array(py, v, "float64", (t.len(), 2))
+    }
+
+    /// Texture coordinate ids of each triangle's corners, `(F, 3)` int64.
+    #[getter]
+    fn face_uvs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let f: Vec<i64> = self.mesh.faces.iter().flat_map(|f| f.uvs.map(|i| i as i64)).collect();
+        array(py, f, "int64", (self.mesh.faces.len(), 3))
+    }
+
+    /// Panel of each triangle, `(F,)` int64 (index into `panel_names`).
+    #[getter]
+    fn face_panels<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let f: Vec<i64> = self.mesh.faces.iter().map(|f| f.panel as i64).collect();
+        array(py, f, "int64", (self.mesh.faces.len(), 0))
+    }
+
+    /// Panel of each vertex, `(V,)` int64; -1 for merged stitch vertices.
+    #[getter]
+    fn vertex_panels<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let v: Vec<i64> = self
+            .mesh
+            .labels
+            .iter()
+            .map(|l| match l {
+                VertexLabel::Panel(p) => *p as i64,
+                VertexLabel::Stitch(_) => -1,
+            })
+            .collect();
+        array(py, v, "int64", (self.mesh.vertices.len(), 0))
+    }
+
+    /// Segmentation label of each vertex (a panel name, or `stitch_k,...`), as
+    /// in `_sim_segmentation.txt`.
+    #[getter]
+    fn vertex_labels(&self) -> Vec<String> {
+        self.mesh.segmentation().lines().map(str::to_string).collect()
+    }
+
+    /// Panel names, in mesh order.
+    #[getter]
+    fn panel_names(&self) -> Vec<String> {
+        self.mesh.panels.iter().map(|p| p.name.clone()).collect()
+    }
+
+    /// For each stitch, the vertex ids of its two sides paired point by point,
+    /// `(n, 2)` int64 each (merged stitches pair a vertex with itself).
+    #[getter]
+    fn stitch_pairs<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyAny>>> {
+        let m = &self.mesh;
+        m.stitches
+            .iter()
+            .map(|s| {
+                let side = |k: usize| -> Vec<usize> {
+                    let (p, e) = s.sides[k];
+                    let panel = &m.panels[p];
+                    panel.edges[e].local.iter().map(|&l| panel.global[l]).collect()
+                };
+                let (mut a, b) = (side(0), side(1));
+                if !s.right_wrong {
+                    a.reverse();
+                }
+                let pairs: Vec<i64> = a.iter().zip(&b).flat_map(|(x, y)| [*x as i64, *y as i64]).collect();
+                array(py, pairs, "int64", (a.len().min(b.len()), 2))
+            })
+            .collect()
+    }
+
+    /// Rest lengths of the edges near stitches: `(E, 2)` int64 vertex pairs and
+    /// `(E,)` float64 lengths (cm), as in `_orig_lens.pickle`.
+    #[getter]
+    fn rest_lengths<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        let r = &self.mesh.rest_lengths;
+        let pairs: Vec<i64> = r.iter().flat_map(|(e, _)| e.map(|i| i as i64)).collect();
+        let lens: Vec<f64> = r.iter().map(|(_, l)| *l).collect();
+        PyTuple::new(py, [array(py, pairs, "int64", (r.len(), 2))?, array(py, lens, "float64", (r.len(), 0))?])
+    }
+
+    /// The mesh files as `{file name: bytes}` (as `garmentcode mesh` writes them).
+    fn files<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (name, bytes) in self.mesh.files() {
+            d.set_item(name, PyBytes::new(py, &bytes))?;
+        }
+        Ok(d)
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Mesh({:?}, {} vertices, {} triangles)", self.mesh.name, self.mesh.vertices.len(), self.mesh.faces.len())
+    }
+}
+
+/// Build a garment: `design` (a dict, nested as the reference's design files or
+/// flat `{path: value}`; YAML text; a built-in design name or a design file
+/// path) on `body` (a `Body`, a built-in name, a body file path, or a dict;
+/// default the neutral body), named `name` (default: the design's name).
+/// Raises `DesignError`, `BodyError` or `BuildError` with the CLI's messages.
+#[pyfunction]
+#[pyo3(signature = (design, body = None, name = None))]
+fn build(py: Python<'_>, design: &Bound<'_, PyAny>, body: Option<&Bound<'_, PyAny>>, name: Option<String>) -> PyResult<PyPattern> {
+    let space = Design::design_space();
+    let (design, design_label) = load_design(design, &space)?;
+    let body = load_body(body)?;
+    let name = name.unwrap_or_else(|| design_label.clone());
+    let built = py
+        .detach(|| garments::build::build(&design, &body.body, &name))
+        .map_err(|e| BuildError::new_err(format!("{design_label} on {}: {e}", body.name)))?;
+    Ok(PyPattern { pattern: built.pattern, origin: Some(Origin { design, body, checks: built.checks }) })
+}
+
+/// Names of the built-in designs.
+#[pyfunction]
+fn builtin_designs() -> Vec<&'static str> {
+    garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect()
+}
+
+/// Make a dataset, as `garmentcode sample` does (same files, byte for byte):
+/// `n` samples of `seed` into the folder `out`. Keywords as the CLI's flags:
+/// `jobs` (threads, default all cores), `bodies` (built-in names or body files,
+/// a list or a comma-separated string, or a folder), `formats` (`json`, `svg`,
+/// `png`), `layout` (`"folders"`, `"shards"` or `"shards:N"`), `design_space` (a
+/// design file or a `DesignSpace` read from one), `shard` (`(i, k)`: only the
+/// samples `i % k == i`). `progress(done, total)` is called a few times a second
+/// from the calling thread. Builds run without the GIL. Returns the summary's
+/// path. Raises `InputError` for bad arguments and `DatasetError` when samples
+/// fail or the run is interrupted (Ctrl-C, or an exception from `progress`).
+#[pyfunction]
+#[pyo3(signature = (n, seed, out, *, jobs = None, bodies = None, formats = None, layout = None, design_space = None, shard = None, progress = None))]
+fn sample_dataset(
+    py: Python<'_>,
+    n: u64,
+    seed: u64,
+    out: &Bound<'_, PyAny>,
+    jobs: Option<u64>,
+    bodies: Option<&Bound<'_, PyAny>>,
+    formats: Option<&Bound<'_, PyAny>>,
+    layout: Option<String>,
+    design_space: Option<&Bound<'_, PyAny>>,
+    shard: Option<(u64, u64)>,
+    progress: Option<Py<PyAny>>,
+) -> PyResult<String> {
+    if n == 0 {
+        return Err(InputError::new_err("sample_dataset: n must be at least 1"));
+    }
+    if jobs == Some(0) {
+        return Err(InputError::new_err("sample_dataset: jobs must be at least 1"));
+    }
+    let formats = match formats {
+        None => None,
+        Some(f) => match f.extract::<String>() {
+            Ok(s) => Some(s),
+            Err(_) => Some(f.extract::<Vec<String>>()?.join(",")),
+        },
+    };
+    let design_space = match design_space {
+        None => None,
+        Some(o) => match o.cast::<PyDesignSpace>() {
+            Ok(s) => s.get().source.clone(),
+            Err(_) => Some(path_or_str(o)?),
+        },
+    };
+    let out = PathBuf::from(path_or_str(out)?);
+    let args = SampleArgs {
+        n: Some(n),
+        seed: Some(seed),
+        out: out.clone(),
+        design_space,
+        bodies: bodies_arg(bodies)?,
+        jobs,
+        shard: shard.map(|(i, k)| format!("{i}/{k}")),
+        formats,
+        replay: None,
+        layout,
+        unpack: Vec::new(),
+    };
+    let shard_of = shard;
+    let mut callback_error: Option<PyErr> = None;
+    let result = py.detach(|| {
+        let mut report = |done: u64, total: u64| -> Result<(), String> {
+            Python::attach(|py| {
+                let r = py.check_signals().and_then(|()| match &progress {
+                    Some(f) => f.call1(py, (done, total)).map(|_| ()),
+                    None => Ok(()),
+                });
+                r.map_err(|e| {
+                    let m = format!("interrupted: {e}");
+                    callback_error.get_or_insert(e);
+                    m
+                })
+            })
+        };
+        sample_cmd::run_reporting(args, Some(&mut report))
+    });
+    if let Some(e) = callback_error {
+        return Err(e);
+    }
+    result.map_err(cli_err)?;
+    let name = match shard_of {
+        None => "dataset_properties.yaml".to_string(),
+        Some((i, k)) => format!("dataset_properties_shard_{i}_of_{k}.yaml"),
+    };
+    Ok(out.join(name).to_string_lossy().into_owned())
+}
+
+/// Compare two specifications (JSON texts) as the parity test and
+/// `garmentcode compare` do: by geometry within `tol` cm, sleeve, cuff and hood
+/// panels by how they sew. Returns `{"pass", "reasons", "chaotic", "max_dev"}`.
+#[pyfunction]
+#[pyo3(signature = (expected, actual, tol = None))]
+fn compare_specs<'py>(py: Python<'py>, expected: &str, actual: &str, tol: Option<f64>) -> PyResult<Bound<'py, PyDict>> {
+    let mut opts = garmentcode_compare::CompareOptions::default();
+    if let Some(t) = tol {
+        opts.tol = t;
+    }
+    let v = py.detach(|| garmentcode_compare::compare_spec_texts(expected, actual, &opts));
+    let d = PyDict::new(py);
+    d.set_item("pass", v.pass)?;
+    d.set_item("reasons", v.reasons)?;
+    d.set_item("chaotic", v.chaotic)?;
+    d.set_item("max_dev", v.max_dev)?;
+    Ok(d)
+}
+
+/// Parse YAML text as the library reads design and body files, into plain Python
+/// values (dicts, lists, numbers, strings, `None`): for reading the YAML files of
+/// samples without a YAML package.
+#[pyfunction]
+fn parse_yaml<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
+    let node = garmentcode::parity::yaml::parse(text).map_err(|e| InputError::new_err(e.to_string()))?;
+    yaml_to_py(py, &node)
+}
+
+/// A YAML node as Python values.
+fn yaml_to_py<'py>(py: Python<'py>, n: &garmentcode::parity::yaml::Node) -> PyResult<Bound<'py, PyAny>> {
+    use garmentcode::parity::yaml::Value as Y;
+    Ok(match &n.value {
+        Y::Map(pairs) => {
+            let d = PyDict::new(py);
+            for (k, v) in pairs {
+                d.set_item(yaml_to_py(py, k)?, yaml_to_py(py, v)?)?;
+            }
+            d.into_any()
+        }
+        Y::Seq(items) => PyList::new(py, items.iter().map(|i| yaml_to_py(py, i)).collect::<PyResult<Vec<_>>>()?)?.into_any(),
+        Y::Str(s) => PyString::new(py, s).into_any(),
+        Y::Float(x) => x.into_bound_py_any(py)?,
+        Y::Int(i) => i.into_bound_py_any(py)?,
+        Y::Bool(b) => b.into_bound_py_any(py)?,
+        Y::Null => py.None().into_bound(py),
+    })
+}
+
+/// The compiled module.
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add_class::<PyBody>()?;
+    m.add_class::<PyDesignSpace>()?;
+    m.add_class::<PyPattern>()?;
+    m.add_class::<PyMesh>()?;
+    m.add_function(wrap_pyfunction!(build, m)?)?;
+    m.add_function(wrap_pyfunction!(builtin_designs, m)?)?;
+    m.add_function(wrap_pyfunction!(sample_dataset, m)?)?;
+    m.add_function(wrap_pyfunction!(compare_specs, m)?)?;
+    m.add_function(wrap_pyfunction!(parse_yaml, m)?)?;
+    m.add("DesignError", py.get_type::<DesignError>())?;
+    m.add("BodyError", py.get_type::<BodyError>())?;
+    m.add("BuildError", py.get_type::<BuildError>())?;
+    m.add("PatternError", py.get_type::<PatternError>())?;
+    m.add("InputError", py.get_type::<InputError>())?;
+    m.add("DatasetError", py.get_type::<DatasetError>())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

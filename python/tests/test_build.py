@@ -1,0 +1,142 @@
+"""Building, drawing, meshing and writing patterns; bad inputs."""
+
+import json
+import subprocess
+
+import numpy as np
+import pytest
+
+import garmentcode as gc
+from conftest import REPO, tree
+
+CASE = REPO / "tests" / "data" / "cases" / "case-001"
+
+
+def test_every_design_form_builds_the_same_pattern():
+    yaml_path = CASE / "design.yaml"
+    text = yaml_path.read_text()
+    nested = gc.parse_yaml(text)
+    flat = gc.DesignSpace().validate(nested)
+    specs = {gc.build(d, "mean_all", name="p").to_json() for d in (str(yaml_path), yaml_path, text, nested, nested["design"], flat)}
+    assert len(specs) == 1
+
+
+def test_builtin_designs_and_bodies():
+    assert "t-shirt" in gc.builtin_designs()
+    assert "mean_all" in gc.Body.builtin()
+    p = gc.build("t-shirt", "mean_female")
+    assert p.name == "t-shirt"
+    assert p.body.name == "mean_female"
+    assert p.design == gc.DesignSpace().validate("t-shirt")
+    assert p.checks["passed"] and p.checks["warnings"] == []
+    assert p.problems() == [] or all(x["severity"] == "warning" for x in p.problems())
+    assert len(p.panels) == len(p.spec["pattern"]["panels"])
+    assert len(p.stitches) == len(p.spec["pattern"]["stitches"])
+    assert p.svg().startswith("<?xml") or p.svg().startswith("<svg")
+    assert p.png().startswith(b"\x89PNG")
+    assert p.svg(layout="flat") != p.svg()
+
+
+def test_write_equals_the_cli_build(cli, tmp_path):
+    pattern = gc.build("fitted-dress", "mean_male")
+    written = pattern.write(tmp_path / "py", formats=["json", "svg", "png", "mesh"])
+    assert "specification.json" in written and "fitted-dress_boxmesh.obj" in written
+    subprocess.run(
+        [cli, "build", "--design", "fitted-dress", "--body", "mean_male", "--out", str(tmp_path / "cli"), "--formats", "json,svg,png,mesh"],
+        check=True,
+        capture_output=True,
+    )
+    assert tree(tmp_path / "py") == tree(tmp_path / "cli")
+
+
+def test_mesh_arrays_agree_with_the_mesh_files():
+    pattern = gc.build("t-shirt")
+    mesh = pattern.mesh(resolution=2.0)
+    v, f = mesh.vertices, mesh.faces
+    assert v.ndim == 2 and v.shape[1] == 3 and f.shape[1] == 3
+    assert f.min() >= 0 and f.max() < len(v)
+    assert mesh.face_uvs.shape == f.shape and mesh.face_uvs.max() < len(mesh.uvs)
+    assert mesh.face_panels.shape == (len(f),) and mesh.face_panels.max() < len(mesh.panel_names)
+    assert len(mesh.vertex_labels) == len(v) == len(mesh.vertex_panels)
+    assert sorted(mesh.panel_names) == sorted(pattern.panels)
+    assert len(mesh.stitch_pairs) == len(pattern.stitches)
+    for pairs in mesh.stitch_pairs:
+        assert pairs.shape[1] == 2 and pairs.max() < len(v)
+    edges, lengths = mesh.rest_lengths
+    assert edges.shape == (len(lengths), 2) and (lengths > 0).all()
+    files = mesh.files()
+    obj = files["t-shirt_boxmesh.obj"].decode()
+    obj_vertices = [line for line in obj.splitlines() if line.startswith("v ")]
+    assert len(obj_vertices) == len(v)
+    first = np.array([float(x) for x in obj_vertices[0].split()[1:]])
+    assert np.allclose(first, v[0])
+    assert files["t-shirt_sim_segmentation.txt"].decode().splitlines() == mesh.vertex_labels
+
+
+def test_from_json_reads_text_and_files(tmp_path):
+    pattern = gc.build("sundress")
+    again = gc.Pattern.from_json(pattern.to_json())
+    assert again.to_json() == pattern.to_json()
+    assert again.checks is None and again.design is None and again.body is None
+    pattern.write(tmp_path / "sundress", formats=["json"])
+    from_file = gc.Pattern.from_json(tmp_path / "sundress" / "specification.json")
+    assert from_file.name == "sundress" and from_file.to_json() == pattern.to_json()
+    written = from_file.write(tmp_path / "again", formats=["json", "svg"])
+    assert sorted(written) == ["pattern.svg", "specification.json"]
+
+
+def test_body_values():
+    body = gc.Body("mean_all")
+    m = body.measurements
+    assert m["height"] > 100
+    assert body["height"] == m["height"]
+    assert any(k.startswith("_") for k in body.derived)
+    same = gc.Body.from_dict(m)
+    assert same.to_yaml().replace("body_sample", "") == body.to_yaml().replace("body_sample", "") or same.measurements == m
+    assert gc.Body.from_yaml(body.to_yaml()).measurements == m
+    assert gc.Body.describe("height")
+
+
+def test_bad_designs_raise_with_clear_messages(tmp_path):
+    with pytest.raises(gc.DesignError, match=r"design\.meta\.upper: \"Shrt\" is not allowed: expected one of \[.*Shirt"):
+        gc.build({"meta.upper": "Shrt"})
+    with pytest.raises(gc.DesignError, match=r"design\.meta\.uper: unknown parameter \(did you mean design\.meta\.upper\?\)"):
+        gc.build({"meta": {"uper": {"v": "Shirt"}}})
+    with pytest.raises(gc.DesignError, match=r"outside the allowed range"):
+        gc.build({"shirt.length": 1000.0})
+    with pytest.raises(gc.DesignError, match="did you mean t-shirt"):
+        gc.build("t-shrt")
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("design:\n  meta:\n    upper:\n      v: Shrt\n")
+    with pytest.raises(gc.DesignError, match=r"bad\.yaml: line 4, column 10: design\.meta\.upper"):
+        gc.build(str(bad))
+    with pytest.raises(ValueError):
+        gc.build(42)
+
+
+def test_bad_bodies_raise_with_clear_messages():
+    with pytest.raises(gc.BodyError, match="did you mean mean_all"):
+        gc.Body("mean_al")
+    body = dict(gc.Body("mean_all").measurements)
+    body["height"] = 1.7
+    with pytest.raises(gc.BodyError, match="it looks like metres"):
+        gc.Body.from_dict(body)
+    del body["height"]
+    with pytest.raises(gc.BodyError, match="body.height: missing measurement"):
+        gc.Body(body)
+
+
+def test_unbuildable_designs_raise_build_error():
+    empty = {"meta.upper": None, "meta.wb": None, "meta.bottom": None}
+    with pytest.raises(gc.BuildError, match="empty garment"):
+        gc.build(empty)
+    assert issubclass(gc.BuildError, ValueError) and issubclass(gc.DatasetError, RuntimeError)
+
+
+def test_bad_pattern_files_raise_pattern_error(tmp_path):
+    with pytest.raises(gc.PatternError):
+        gc.Pattern.from_json("{\"pattern\": 3}")
+    with pytest.raises(gc.PatternError, match="cannot read"):
+        gc.Pattern.from_json(tmp_path / "missing.json")
+    with pytest.raises(ValueError, match="unknown format 'obj'"):
+        gc.build("t-shirt").write(tmp_path / "x", formats=["obj"])
