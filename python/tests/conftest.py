@@ -23,6 +23,8 @@ def cli_path():
 def cli():
     """The CLI binary, or skip (visibly) without it."""
     path = cli_path()
+    if path is None and os.environ.get("GARMENTCODE_REQUIRE_CLI"):
+        pytest.fail("GARMENTCODE_REQUIRE_CLI is set but there is no CLI: set GARMENTCODE_CLI to the built binary")
     if path is None:
         pytest.skip("no garmentcode CLI to compare with: set GARMENTCODE_CLI to the built binary (.ci/run does)")
     return path

@@ -124,10 +124,12 @@ def test_an_exception_in_progress_stops_the_run(tmp_path):
         raise KeyboardInterrupt
 
     with pytest.raises(KeyboardInterrupt):
-        gc.sample_dataset(200, 1, tmp_path / "x", jobs=1, progress=stop)
+        gc.sample_dataset(400, 1, tmp_path / "x", jobs=1, progress=stop)
+    assert not (tmp_path / "x" / "dataset_properties.yaml").exists()
+    assert len(list((tmp_path / "x").iterdir())) < 400
     # What was written is complete: a rerun resumes to the same dataset.
-    gc.sample_dataset(20, 1, tmp_path / "x", jobs=1)
-    gc.sample_dataset(20, 1, tmp_path / "y", jobs=1)
+    gc.sample_dataset(400, 1, tmp_path / "x", jobs=1)
+    gc.sample_dataset(400, 1, tmp_path / "y", jobs=2)
     assert content(tmp_path / "x")[0] == content(tmp_path / "y")[0]
 
 
