@@ -1,5 +1,5 @@
 //! `garmentcode sample --n N --seed S --out DIR [--design-space FILE.yaml]
-//! [--bodies NAME,NAME|DIR] [--jobs J] [--shard I/K] [--formats json,svg,png]
+//! [--bodies NAME,NAME|DIR] [--jobs J] [--shard I/K] [--formats json,svg,png,mesh]
 //! [--layout folders|shards[:N]]`: a dataset of random garments, as a folder per
 //! sample or as tar shards (see `shards`); `--unpack SHARD.tar... --out DIR` turns
 //! shards back into folders.
@@ -136,7 +136,8 @@ fn parse_formats(s: &str) -> Result<Formats, CliError> {
             "json" => f.json = true,
             "svg" => f.svg = true,
             "png" => f.png = true,
-            other => return Err(usage(format!("sample --formats: unknown format '{other}' (expected a list of json, svg, png)"))),
+            "mesh" => f.mesh = true,
+            other => return Err(usage(format!("sample --formats: unknown format '{other}' (expected a list of json, svg, png, mesh)"))),
         }
     }
     Ok(f)
@@ -489,6 +490,13 @@ fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<
             if opts.formats.svg || opts.formats.png {
                 crate::commands::add_drawings(&mut set, &built.pattern, opts.formats.png, garmentcode::draw::Layout::Placed)
                     .map_err(|e| CliError::Failed(e.to_string()))?;
+            }
+            if opts.formats.mesh {
+                let mesh = garmentcode::mesh::BoxMesh::new(&built.pattern, garmentcode::mesh::DEFAULT_RESOLUTION)
+                    .map_err(|e| CliError::Failed(format!("{name}: cannot mesh the pattern: {e}")))?;
+                for (file, bytes) in mesh.files() {
+                    set.add(&file, bytes);
+                }
             }
             set.add("checks.json", built.checks.to_json());
         }

@@ -51,7 +51,8 @@ fn member_name(key: &str, file: &str) -> String {
 
 /// The folder file name of a member's suffix: the inverse of [`member_name`].
 fn folder_file_name(key: &str, rest: &str) -> String {
-    if rest == "specification.json" || rest.starts_with("pattern.") { format!("{key}_{rest}") } else { rest.to_string() }
+    let mesh_file = garmentcode::mesh::write::FILE_SUFFIXES.iter().any(|suffix| suffix.strip_prefix('_') == Some(rest));
+    if rest == "specification.json" || rest.starts_with("pattern.") || mesh_file { format!("{key}_{rest}") } else { rest.to_string() }
 }
 
 /// Split a member name into its sample index, key and suffix.
