@@ -902,7 +902,7 @@ fn builtin_designs() -> Vec<&'static str> {
 /// `n` samples of `seed` into the folder `out`. Keywords as the CLI's flags:
 /// `jobs` (threads, default all cores), `bodies` (built-in names or body files,
 /// a list or a comma-separated string, or a folder), `formats` (`json`, `svg`,
-/// `png`), `layout` (`"folders"`, `"shards"` or `"shards:N"`), `design_space` (a
+/// `png`, `mesh`), `layout` (`"folders"`, `"shards"` or `"shards:N"`), `design_space` (a
 /// design file or a `DesignSpace` read from one), `shard` (`(i, k)`: only the
 /// samples `i % k == i`). `progress(done, total)` is called a few times a second
 /// from the calling thread. Builds run without the GIL. Returns the summary's

@@ -38,8 +38,8 @@ def test_dataset_equals_the_cli_byte_for_byte(cli, tmp_path):
 
 
 def test_shards_equal_the_cli_byte_for_byte(cli, tmp_path):
-    gc.sample_dataset(10, 3, tmp_path / "py", layout="shards:4", jobs=2)
-    run_cli(cli, "sample", "--n", "10", "--seed", "3", "--out", str(tmp_path / "cli"), "--layout", "shards:4", "--jobs", "2")
+    gc.sample_dataset(10, 3, tmp_path / "py", layout="shards:4", jobs=2, formats="json,mesh")
+    run_cli(cli, "sample", "--n", "10", "--seed", "3", "--out", str(tmp_path / "cli"), "--layout", "shards:4", "--jobs", "2", "--formats", "json,mesh")
     py_files, _ = content(tmp_path / "py")
     cli_files, _ = content(tmp_path / "cli")
     assert py_files == cli_files
