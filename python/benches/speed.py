@@ -1,6 +1,6 @@
 """Speed of the Python package against the CLI, on one thread.
 
-    python python/bench.py [--cli PATH]
+    python python/benches/speed.py [--cli PATH]
 
 1. Per design: a design file's text to ``specification.json`` text through
    ``garmentcode.build`` (the median of 7 runs per design, summarised over a fixed
