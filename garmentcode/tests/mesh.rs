@@ -396,6 +396,25 @@ fn small_files_snapshot() {
     );
 }
 
+/// A ruffle of a levels skirt (seen in a dataset run): a half ring 1 to 3 cm wide and
+/// 16 m long, whose bounding box is 180 times its area. It meshes, with vertices in
+/// proportion to its area, and with the mesh's properties.
+#[test]
+fn a_thin_ring_meshes_in_proportion_to_its_area() {
+    let spec = r#"{"pattern": {"panels": {"ruffle": {"translation": [-514.7533775580981, 297.6170280779458, 17.5], "rotation": [0.0, 0.0, 0.0], "vertices": [[-0.7533775580981228, 0.0], [-3.784064527139094, 0.0], [1031.784064527139, 0.0], [1028.7533775580982, 0.0]], "edges": [{"endpoints": [0, 1]}, {"endpoints": [1, 2], "curvature": {"type": "circle", "params": [517.7877953290746, 0, 1]}}, {"endpoints": [2, 3]}, {"endpoints": [3, 0], "curvature": {"type": "circle", "params": [514.7533775580986, 0, 0]}}], "label": "leg"}}, "stitches": [], "panel_order": ["ruffle"]}, "properties": {"curvature_coords": "relative", "normalize_panel_translation": false, "normalized_edge_loops": true, "units_in_meter": 100}}"#;
+    let pattern = Pattern::from_json(spec).expect("pattern");
+    let mesh = BoxMesh::new(&pattern, DEFAULT_RESOLUTION).expect("a thin ring meshes");
+    let area = area_of(&mesh, 0);
+    // The area inside the sampled outline (the two arcs are not concentric: the ring
+    // narrows from 3 cm at its ends to 1 cm at its middle).
+    let panel = &mesh.panels[0];
+    let outline: Vec<Vec2> = panel.edges.iter().flat_map(|e| e.local[..e.local.len() - 1].iter().map(|&i| panel.points[i])).collect();
+    let expected = (0..outline.len()).map(|i| outline[i].perp_dot(outline[(i + 1) % outline.len()])).sum::<f64>().abs() / 2.0;
+    assert!((area - expected).abs() < 1e-6 * expected, "area {area} vs {expected}");
+    assert!(mesh.vertices.len() < (3.0 * area) as usize, "{} vertices for {area} cm²", mesh.vertices.len());
+    assert_eq!(properties(&mesh), Vec::<String>::new());
+}
+
 #[test]
 fn real_faults_are_named_errors() {
     let case = &mesh_cases()[0];
