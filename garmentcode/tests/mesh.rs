@@ -353,7 +353,15 @@ fn written_files_read_back() {
     let mesh = BoxMesh::new(&load(&case.join(format!("{name}_specification.json")), &name), DEFAULT_RESOLUTION).expect("mesh");
     let dir = std::env::temp_dir().join(format!("garmentcode-mesh-{}", std::process::id()));
     let written = mesh.write_files(&dir).expect("written");
-    assert_eq!(written.len(), 7);
+    assert_eq!(written.len(), garmentcode::mesh::write::FILE_SUFFIXES.len());
+    // The texture the material names: a PNG of the declared size.
+    let material = std::fs::read_to_string(dir.join(format!("{name}_material.mtl"))).unwrap();
+    let texture = material.lines().find_map(|l| l.strip_prefix("map_Kd ")).expect("map_Kd");
+    let png = std::fs::read(dir.join(texture)).expect("the texture the material names is written");
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let side = garmentcode::mesh::write::TEXTURE_SIZE as u32;
+    let (width, height) = (u32::from_be_bytes(png[16..20].try_into().unwrap()), u32::from_be_bytes(png[20..24].try_into().unwrap()));
+    assert_eq!((width, height), (side, side));
     let (vertices, faces) = read_obj(&std::fs::read_to_string(dir.join(format!("{name}_boxmesh.obj"))).unwrap()).expect("our OBJ");
     assert_eq!(vertices, mesh.vertices, "positions round-trip exactly");
     assert_eq!(faces, mesh.faces.iter().map(|f| f.vertices).collect::<Vec<_>>());
