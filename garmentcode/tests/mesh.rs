@@ -423,6 +423,21 @@ fn a_thin_ring_meshes_in_proportion_to_its_area() {
     assert_eq!(properties(&mesh), Vec::<String>::new());
 }
 
+/// A skirt whose side seam is stitched in crossed pieces (sample 2337 of seed 7: the
+/// front's lowest piece is stitched to the back's highest), so that merging the stitches
+/// collapses a short edge onto one vertex. It meshes: the collapsed faces are dropped
+/// and every other property holds.
+#[test]
+fn crossed_seam_pieces_mesh() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/mesh-extra/crossed_seams_specification.json");
+    let pattern = load(&path, "crossed_seams");
+    let mesh = BoxMesh::new(&pattern, DEFAULT_RESOLUTION).expect("crossed seams mesh");
+    assert_eq!(properties(&mesh), Vec::<String>::new());
+    for f in &mesh.faces {
+        assert!(f.vertices[0] != f.vertices[1] && f.vertices[1] != f.vertices[2] && f.vertices[0] != f.vertices[2], "a collapsed face");
+    }
+}
+
 #[test]
 fn real_faults_are_named_errors() {
     let case = &mesh_cases()[0];

@@ -126,16 +126,6 @@ pub enum MeshError {
         /// What is wrong.
         reason: String,
     },
-    /// Stitching collapsed both ends of a stitched edge into one vertex.
-    #[error("stitch {stitch}: panel '{panel}' edge {edge} collapses to a single vertex when stitched")]
-    StitchCollapsed {
-        /// Stitch index.
-        stitch: usize,
-        /// Panel name.
-        panel: String,
-        /// Edge index.
-        edge: usize,
-    },
 }
 
 /// The segmentation label of a mesh vertex.
@@ -472,14 +462,6 @@ impl BoxMesh {
                         loc_glob.insert(kb, globals.len());
                         globals.push(GlobalStitch { pos: (pa + pb) / 2.0, labels: vec![k], members: vec![ka, kb] });
                     }
-                }
-            }
-        }
-        for (k, s) in stitches.iter().enumerate() {
-            for (p, e) in s.sides {
-                let r = &panels[p].edges[e].local;
-                if loc_glob.get(&(p, r[0])) == loc_glob.get(&(p, r[r.len() - 1])) {
-                    return Err(MeshError::StitchCollapsed { stitch: k, panel: panels[p].name.clone(), edge: e });
                 }
             }
         }
