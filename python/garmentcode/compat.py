@@ -30,9 +30,10 @@ Covered (same files as pygarment unless said otherwise):
   ``vertex_texture``, ``faces_with_texture``, ``stitch_segmentation``,
   ``orig_lens`` and ``serialize(paths, tag='', ...)`` writing the pattern's files
   and the mesh files (``_boxmesh.obj``, ``_material.mtl``,
-  ``_sim_segmentation.txt``, ``_orig_lens.pickle``, ``_vertex_labels.yaml``, plus
-  ``_sim_mesh.obj`` and ``_boxmesh.ply``) into ``paths.out_el`` (a ``PathCofig``)
-  or into ``paths`` itself when it is a folder. Not written: the texture images.
+  ``_sim_segmentation.txt``, ``_orig_lens.pickle``, ``_vertex_labels.yaml``,
+  ``_texture_fabric.png``, plus ``_sim_mesh.obj`` and ``_boxmesh.ply``) into
+  ``paths.out_el`` (a ``PathCofig``) or into ``paths`` itself when it is a folder.
+  Not written: the ``_texture.png`` preview of the UV layout.
 - ``Properties(filename)``: a JSON file as a dict (``[key]``, ``get``,
   ``serialize(filename)``), as pygarment's ``data_config.Properties`` for reading
   ``system.json``.
