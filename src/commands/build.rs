@@ -41,6 +41,14 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
             set.add(&file, bytes);
         }
     }
+    if wants(BuildFormat::Print) {
+        let opts = garmentcode::fabricate::PrintOptions { garment: name.clone(), size: body_label.clone(), ..Default::default() };
+        let files = garmentcode::fabricate::files(&built.pattern, &opts)
+            .map_err(|e| CliError::Input(format!("{design_label} on {body_label}: cannot print: {e}")))?;
+        for (file, bytes) in files {
+            set.add(&file, bytes);
+        }
+    }
     set.add("design_params.yaml", write_design(&design, &Design::design_space()));
     set.add("body_measurements.yaml", body.to_yaml());
     set.add("checks.json", built.checks.to_json());

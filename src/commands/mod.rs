@@ -4,6 +4,7 @@ pub mod build;
 pub mod check;
 pub mod compare;
 pub mod mesh;
+pub mod print;
 pub mod render;
 pub mod sample;
 pub mod schema;
