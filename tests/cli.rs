@@ -479,3 +479,52 @@ fn build_formats_choose_drawings_and_the_mesh() {
     assert_eq!(code(&o), 2);
     assert!(!dir.join("b").exists());
 }
+
+#[test]
+fn print_writes_the_printable_pattern() {
+    let dir = scratch("print");
+    let spec = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/cases/t-shirt-mean_all/specification.json");
+    let spec = spec.to_str().unwrap();
+    let o = run(&["print", spec, "--out", "out", "--paper", "letter", "--seam", "1.5", "--hem", "3", "--size", "mean_all"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let names = ["pattern-tiled.pdf", "pattern-sheet.pdf", "pattern-sheet.svg", "pattern.dxf", "cutting-layout.svg", "cutting-layout.txt"];
+    for n in names {
+        assert!(dir.join("out").join(n).is_file(), "{n} missing");
+    }
+    let report = std::fs::read_to_string(dir.join("out/cutting-layout.txt")).unwrap();
+    assert!(report.contains("Fabric length needed") && report.contains("Cut 1 on fold"), "{report}");
+    let svg = std::fs::read_to_string(dir.join("out/pattern-sheet.svg")).unwrap();
+    assert!(svg.contains("Size: mean_all") && svg.contains("Seam allowance 1.5 cm included, hems 3 cm"));
+    // The same again gives the same bytes (and replaces its own folder).
+    let first: Vec<Vec<u8>> = names.iter().map(|n| std::fs::read(dir.join("out").join(n)).unwrap()).collect();
+    assert_eq!(
+        code(&run(&["print", spec, "--out", "out", "--paper", "letter", "--seam", "1.5", "--hem", "3", "--size", "mean_all"], &dir)),
+        0
+    );
+    let again: Vec<Vec<u8>> = names.iter().map(|n| std::fs::read(dir.join("out").join(n)).unwrap()).collect();
+    assert!(first == again);
+    // Bad options are refused clearly.
+    for (args, want) in [
+        (vec!["--paper", "a3"], "a4, letter, a0 or roll"),
+        (vec!["--seam=-1"], "non-negative"),
+        (vec!["--seam-edge", "nope=2"], "no panel 'nope'"),
+        (vec!["--seam-edge", "right_ftorso:99=2"], "has 7 edges"),
+    ] {
+        let mut all = vec!["print", spec, "--out", "bad"];
+        all.extend(args);
+        let o = run(&all, &dir);
+        assert_eq!(code(&o), 2, "{all:?}");
+        assert!(stderr(&o).contains(want), "{all:?}: {}", stderr(&o));
+        assert!(!dir.join("bad").exists());
+    }
+}
+
+#[test]
+fn build_formats_print_writes_the_same_files() {
+    let dir = scratch("build_print");
+    let o = run(&["build", "--design", "t-shirt", "--out", "b", "--formats", "json,print"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(dir.join("b/pattern.dxf").is_file() && dir.join("b/pattern-tiled.pdf").is_file() && !dir.join("b/pattern.svg").exists());
+    let dxf = std::fs::read_to_string(dir.join("b/pattern.dxf")).unwrap();
+    assert!(dxf.contains("AC1009") && dxf.contains("Size: mean_all"));
+}

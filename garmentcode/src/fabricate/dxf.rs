@@ -11,7 +11,7 @@
 
 use super::sheet::Sheet;
 use super::svg::num;
-use super::{Piece, PrintOptions};
+use super::types::{Cut, Piece, PrintOptions};
 use crate::math::Vec2;
 use std::fmt::Write;
 
@@ -136,7 +136,7 @@ pub fn write(pieces: &[Piece], sheet: &Sheet, opts: &PrintOptions) -> String {
             format!(
                 "Quantity: {}",
                 match p.cut {
-                    super::Cut::One | super::Cut::OnFold => 1,
+                    Cut::One | Cut::OnFold => 1,
                     _ => 2,
                 }
             ),
@@ -204,12 +204,12 @@ pub struct DxfDrawing {
     pub entities: Vec<DxfEntity>,
 }
 
-/// Read an ASCII DXF file of the kind [`files`](super::files) writes (entities
+/// Read an ASCII DXF file of the kind `files` writes (entities
 /// `POLYLINE`/`VERTEX`/`SEQEND`, `LINE`, `TEXT`, `INSERT`); other entities are kept
 /// with their first point.
 pub fn read_dxf(text: &str) -> std::result::Result<DxfDrawing, String> {
     let lines: Vec<&str> = text.lines().map(str::trim).collect();
-    if lines.len() % 2 != 0 {
+    if !lines.len().is_multiple_of(2) {
         return Err("odd number of lines: not group code / value pairs".into());
     }
     let pairs: Vec<(i32, &str)> = lines

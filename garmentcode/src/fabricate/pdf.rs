@@ -3,7 +3,7 @@
 
 use super::geom::Rect;
 use super::sheet::{self, OVERLAP, PAGE_MARGIN, Prim, Sheet, Style, Tile};
-use super::{Piece, PrintOptions};
+use super::types::{Piece, PrintOptions};
 use crate::math::Vec2;
 use pdf_writer::{Content, Name, Pdf, Rect as PdfRect, Ref, Str};
 
@@ -141,6 +141,16 @@ fn tile_page(s: &Sheet, t: &Tile, page: Vec2, kept: &[Tile]) -> Vec<u8> {
     let area = t.area.size();
     let (x0, y0) = map(t.area.min);
     let (x1, y1) = map(t.area.max);
+    // The page's name, large and light behind the drawing.
+    let label = t.label();
+    let centre = map((t.area.min + t.area.max) / 2.0);
+    let big = (4.0 * PT) as f32;
+    c.begin_text();
+    c.set_fill_gray(0.88);
+    c.set_font(Name(b"F1"), big);
+    c.set_text_matrix([1.0, 0.0, 0.0, 1.0, centre.0 - big * 0.3 * label.len() as f32, centre.1 - big * 0.35]);
+    c.show(Str(&ascii(&label)));
+    c.end_text();
     // The drawing, clipped to the printable area.
     c.save_state();
     c.rect(x0, y1, x1 - x0, y0 - y1).clip_nonzero().end_path();
@@ -167,16 +177,9 @@ fn tile_page(s: &Sheet, t: &Tile, page: Vec2, kept: &[Tile]) -> Vec<u8> {
     ] {
         mark(&mut c, map(p));
     }
-    // Labels: this page and its neighbours.
-    let label = t.label();
-    let grey = |c: &mut Content| {
-        c.set_fill_gray(0.35);
-    };
-    grey(&mut c);
-    let big = (1.0 * PT) as f32;
+    // Labels: this page (in the top margin) and its neighbours.
     let small = (0.45 * PT) as f32;
-    let here = map(t.area.min + Vec2::new(1.2, 1.9));
-    text_grey(&mut c, here, big, &label);
+    text_grey(&mut c, (x0, y0 + (0.3 * PT) as f32), (0.5 * PT) as f32, &format!("Page {label}"));
     let has = |r: isize, cl: isize| kept.iter().any(|k| k.row as isize == r && k.col as isize == cl);
     let (r, cl) = (t.row as isize, t.col as isize);
     let nb = |r: isize, cl: isize| sheet::tile_label(r as usize, cl as usize);
@@ -241,7 +244,7 @@ fn cover(s: &Sheet, pieces: &[Piece], opts: &PrintOptions, page: Vec2, rows: usi
     let k = (avail.x / extent.x).min(avail.y / extent.y);
     let map = |p: Vec2| (((1.5 + p.x * k) * PT) as f32, ((page.y - map_top - p.y * k) * PT) as f32);
     for p in &s.prims {
-        if let Prim::Path { pts, closed: true, style: Style::Cut } = p {
+        if let Prim::Path { pts, closed: true, style: Style::Cut | Style::Frame } = p {
             draw(&mut c, &[Prim::Path { pts: pts.clone(), closed: true, style: Style::Sew }], &map, PT * k);
         }
     }

@@ -2,7 +2,7 @@
 //! cut count and labels, each piece in its own frame with the grain pointing up.
 
 use super::geom::{self, OffsetEdge, Rect, Xf};
-use super::{Cut, Notch, Piece, PrintOptions};
+use super::types::{Cut, Notch, Piece, PrintOptions};
 use crate::edge::{Curve, Edge, Segment};
 use crate::error::{Error, Result};
 use crate::math::{Vec2, Vec3};
@@ -21,6 +21,9 @@ pub const NOTCH_LENGTH: f64 = 0.6;
 
 /// Stitched edges whose lengths differ by more than this fraction are gathered.
 pub const GATHER_RATIO: f64 = 0.05;
+
+/// A panel edge: panel name and edge index.
+type PanelEdge = (String, usize);
 
 /// Tolerance of the shape comparisons that find mirrored and repeated panels (cm).
 const SAME_SHAPE: f64 = 0.05;
@@ -388,7 +391,7 @@ pub(crate) fn build(p: &Pattern, opts: &PrintOptions) -> Result<Vec<Piece>> {
         }
         let sew = sew_line(&g.edges);
         let cut = cut_line(g, &allow);
-        let mut marks: Vec<(Vec2, Vec2, (String, usize))> =
+        let mut marks: Vec<(Vec2, Vec2, PanelEdge)> =
             panel_notches(p, gr.rep, g, &allow, &fracs).into_iter().map(|(_, at, r, e)| (at, r, (panel.name.clone(), e))).collect();
         let mut placements = vec![(panel.name.clone(), g.xf)];
         if let Some((j, m)) = gr.partner {
@@ -406,7 +409,7 @@ pub(crate) fn build(p: &Pattern, opts: &PrintOptions) -> Result<Vec<Piece>> {
         }
         // One notch per point and direction: notches of seams meeting at a point
         // within 8° of each other become one, along their mean direction.
-        let mut merged: Vec<(Vec2, Vec2, usize, Vec<(String, usize)>)> = Vec::new();
+        let mut merged: Vec<(Vec2, Vec2, usize, Vec<PanelEdge>)> = Vec::new();
         for (at, r, id) in marks {
             match merged.iter_mut().find(|(q, m, _, _)| (*q - at).length() < 0.05 && m.normalize().dot(r.normalize()) > 0.99) {
                 Some((_, m, count, ids)) => {

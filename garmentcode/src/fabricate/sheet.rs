@@ -2,7 +2,7 @@
 //! tiling onto home-printer pages, and the cutting layout on a fabric width.
 
 use super::geom::{Rect, Xf};
-use super::{Cut, Piece, PrintOptions};
+use super::types::{Cut, Piece, PrintOptions};
 use crate::math::Vec2;
 
 /// Gap between nested pieces (cm).
@@ -189,28 +189,30 @@ fn title_block(pieces: &[Piece], opts: &PrintOptions, at: Vec2) -> (Vec<Prim>, V
     ];
     lines.extend(pieces.iter().map(|p| format!("  {}: {}", p.name, p.cut.text())));
     lines.push("Made with garmentcode".into());
-    let size = 0.6;
-    let width = lines.iter().map(|l| l.len()).max().unwrap_or(10) as f64 * 0.55 * size + 1.0;
-    let text_h = lines.len() as f64 * size * 1.4 + 1.0;
-    let mut out = Vec::new();
-    for (k, l) in lines.iter().enumerate() {
-        let s = if k == 0 { size * 1.4 } else { size };
-        out.push(Prim::Text { at: at + Vec2::new(0.5, 1.0 + size * 1.4 * k as f64), size: s, text: l.clone(), angle: 0.0 });
-    }
-    let h = text_h.max(SCALE_BOX_CM + 1.5);
+    // The scale boxes first, stacked at the sheet's top-left corner: on the first
+    // tiled page, whatever the paper.
     let rect = |o: Vec2, s: Vec2| Prim::Path {
         pts: vec![o, o + Vec2::new(s.x, 0.0), o + s, o + Vec2::new(0.0, s.y)],
         closed: true,
         style: Style::Frame,
     };
-    out.push(rect(at, Vec2::new(width, h)));
-    let cm_at = at + Vec2::new(width + 1.0, 0.0);
-    out.push(rect(cm_at, Vec2::splat(SCALE_BOX_CM)));
-    out.push(Prim::Text { at: cm_at + Vec2::new(2.5, 5.3), size: 1.0, text: "10 cm".into(), angle: 0.0 });
-    let in_at = cm_at + Vec2::new(SCALE_BOX_CM + 1.0, 0.0);
+    let mut out = vec![rect(at, Vec2::splat(SCALE_BOX_CM))];
+    out.push(Prim::Text { at: at + Vec2::new(2.5, 5.3), size: 1.0, text: "10 cm".into(), angle: 0.0 });
+    out.push(Prim::Text { at: at + Vec2::new(2.5, 6.5), size: 0.5, text: "(must measure 10 cm)".into(), angle: 0.0 });
+    let in_at = at + Vec2::new(0.0, SCALE_BOX_CM + 0.8);
     out.push(rect(in_at, Vec2::splat(SCALE_BOX_IN)));
     out.push(Prim::Text { at: in_at + Vec2::new(3.0, 5.3), size: 1.0, text: "4 in".into(), angle: 0.0 });
-    (out, Vec2::new(width + 2.0 + SCALE_BOX_CM + SCALE_BOX_IN, h))
+    let boxes_h = SCALE_BOX_CM + 0.8 + SCALE_BOX_IN;
+    let size = 0.6;
+    let text_at = at + Vec2::new(SCALE_BOX_IN + 1.0, 0.0);
+    let width = lines.iter().map(|l| l.len()).max().unwrap_or(10) as f64 * 0.55 * size + 1.0;
+    let text_h = lines.len() as f64 * size * 1.4 + 1.0;
+    for (k, l) in lines.iter().enumerate() {
+        let s = if k == 0 { size * 1.4 } else { size };
+        out.push(Prim::Text { at: text_at + Vec2::new(0.5, 1.0 + size * 1.4 * k as f64), size: s, text: l.clone(), angle: 0.0 });
+    }
+    out.push(rect(text_at, Vec2::new(width, text_h)));
+    (out, Vec2::new(SCALE_BOX_IN + 1.0 + width, boxes_h.max(text_h)))
 }
 
 /// The one-sheet drawing: the title block, then the pieces nested on grain in rows

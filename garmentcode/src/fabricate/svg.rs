@@ -2,7 +2,7 @@
 
 use super::geom::Rect;
 use super::sheet::{CuttingLayout, Prim, Sheet, Style};
-use super::{Piece, PrintOptions};
+use super::types::{Piece, PrintOptions};
 use crate::math::Vec2;
 use std::fmt::Write;
 
@@ -93,7 +93,11 @@ pub fn cutting(l: &CuttingLayout, pieces: &[Piece], opts: &PrintOptions) -> Stri
         num(l.length)
     );
     let font = r#"font-family="Helvetica, Arial, sans-serif""#;
-    let _ = writeln!(out, r#"<text x="0" y="-1" {font} font-size="1.5">selvage - fabric {} cm wide</text>"#, num(l.width));
+    let _ = writeln!(
+        out,
+        r#"<text x="0" y="-1" {font} font-size="1.5">fabric {} cm wide: selvages left and right, grain runs down</text>"#,
+        num(l.width)
+    );
     let _ = writeln!(
         out,
         r#"<text x="0" y="{}" {font} font-size="1.5">fabric needed: {} cm</text>"#,
