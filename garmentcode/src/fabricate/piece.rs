@@ -336,24 +336,28 @@ fn slit(at: Vec2, reach: Vec2, cut: &[Vec2], edges: Vec<(String, usize)>) -> Not
     Notch { sew: at, outer, inner: outer + inward * NOTCH_LENGTH.min(len), edges }
 }
 
-/// A point well inside a polygon (the grid point farthest from its outline) and
-/// its distance to the outline.
+/// A point well inside a polygon and its distance to the outline: of the grid
+/// points at least 95% as far from the outline as the farthest, the one nearest
+/// the middle of the polygon's box (so long strips get their label in the middle).
 pub(crate) fn interior_point(poly: &[Vec2]) -> (Vec2, f64) {
     let b = Rect::of(poly.iter().copied());
+    let middle = (b.min + b.max) / 2.0;
     let steps = 24;
-    let mut best = ((b.min + b.max) / 2.0, 0.0);
+    let mut scored = Vec::new();
     for i in 0..=steps {
         for j in 0..=steps {
             let q = b.min + b.size() * Vec2::new(i as f64 / steps as f64, j as f64 / steps as f64);
             if geom::inside(q, poly) {
-                let d = geom::distance_to_closed(q, poly);
-                if d > best.1 {
-                    best = (q, d);
-                }
+                scored.push((q, geom::distance_to_closed(q, poly)));
             }
         }
     }
-    best
+    let far = scored.iter().map(|s| s.1).fold(0.0, f64::max);
+    scored
+        .into_iter()
+        .filter(|s| s.1 >= 0.95 * far)
+        .min_by(|a, b| (a.0 - middle).length().total_cmp(&(b.0 - middle).length()))
+        .unwrap_or((middle, 0.0))
 }
 
 /// Vertical extent of a polygon at `x` around `y`: the inside interval holding `y`.

@@ -158,14 +158,17 @@ pub fn piece_prims(p: &Piece, xf: &Xf) -> Vec<Prim> {
             if (c - a).dot(n) >= 0.0 { n } else { -n }
         };
         let (s, e) = (a.lerp(b, 0.2), a.lerp(b, 0.8));
-        let depth = 2.0;
+        // Sized to the piece: a bracket at most a quarter of the piece's width deep,
+        // the words along at most 60% of the fold.
+        let depth = (Rect::of(p.sew.iter().copied()).size().x * 0.25).min(2.0);
+        let text_size = (0.6 * (b - a).length() / (13.0 * 0.6)).min(0.8);
         out.push(path(vec![s, s + inward * depth, e + inward * depth, e], false, Style::Fold));
         out.push(path(arrow_head(s, -inward, 0.6), false, Style::Fold));
         out.push(path(arrow_head(e, -inward, 0.6), false, Style::Fold));
         let angle = -along.y.atan2(along.x).to_degrees();
         let (angle, start) = if angle.abs() > 90.0 { (angle - 180.0f64.copysign(angle), e) } else { (angle, s) };
-        let text_at = start + inward * (depth + 1.2) + (if start == s { along } else { -along }) * 1.0;
-        out.push(Prim::Text { at: text_at, size: 0.8, text: "PLACE ON FOLD".into(), angle });
+        let text_at = start + inward * (depth + 0.4 + text_size) + (if start == s { along } else { -along }) * 0.1 * (b - a).length();
+        out.push(Prim::Text { at: text_at, size: text_size, text: "PLACE ON FOLD".into(), angle });
     }
     for line in &p.internal {
         out.push(path(map(line), false, Style::Internal));
