@@ -4,7 +4,11 @@
 //! - `library_one_thread`: `DatasetSampler::draw_in` and `Pattern::to_json` per
 //!   sample, on one thread (what one core does, without file I/O);
 //! - `cli`: the whole `garmentcode sample` command (threads, files, summary) into a
-//!   fresh folder, with `--jobs` 1 and 2.
+//!   fresh folder, with `--jobs` 1 and 2;
+//! - `cli_mesh`: the command with `--formats json,mesh --layout shards` (every sample's
+//!   simulation box mesh too), with `--jobs` 2;
+//! - after divan's table: where one thread's time goes per sample with meshes (drawing
+//!   and building the design, the mesh, the mesh's files), the share of meshing.
 //!
 //! `cargo bench --bench sample`; the command writes under `$GARMENTCODE_BENCH_DIR`
 //! (default: the temporary directory), so the disk can be chosen.
@@ -23,6 +27,42 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 fn main() {
     divan::main();
+    mesh_share();
+}
+
+/// Prints the time per sample of one thread in the design (draw, build, JSON), the
+/// box mesh and its files, over the first 300 samples of the seed.
+fn mesh_share() {
+    use garmentcode::mesh::{BoxMesh, DEFAULT_RESOLUTION};
+    use std::time::{Duration, Instant};
+    let sampler = DatasetSampler::with_defaults(SEED);
+    let mut arena = garmentcode::Arena::new();
+    let (mut design, mut mesh, mut files, mut n) = (Duration::ZERO, Duration::ZERO, Duration::ZERO, 0u32);
+    for i in 0..300 {
+        let t = Instant::now();
+        let Outcome::Accepted(s) = sampler.draw_in(&mut arena, i) else { continue };
+        let json = s.built.pattern.to_json().expect("pattern serialises");
+        let t1 = Instant::now();
+        let m = BoxMesh::new(&s.built.pattern, DEFAULT_RESOLUTION).expect("every sample meshes");
+        let t2 = Instant::now();
+        let bytes: usize = m.files().iter().map(|f| f.1.len()).sum::<usize>() + json.len();
+        std::hint::black_box(bytes);
+        let t3 = Instant::now();
+        design += t1 - t;
+        mesh += t2 - t1;
+        files += t3 - t2;
+        n += 1;
+    }
+    let total = design + mesh + files;
+    let ms = |d: Duration| d.as_secs_f64() * 1e3 / f64::from(n);
+    println!(
+        "one thread, per sample with a mesh ({n} samples): design {:.3} ms, mesh {:.3} ms, mesh files {:.3} ms; meshing {:.0}% of the time, {:.0} samples/s",
+        ms(design),
+        ms(mesh),
+        ms(files),
+        100.0 * (mesh + files).as_secs_f64() / total.as_secs_f64(),
+        f64::from(n) / total.as_secs_f64()
+    );
 }
 
 /// Samples per iteration of the library benchmark.
@@ -77,6 +117,37 @@ fn cli(bencher: divan::Bencher, jobs: usize) {
                 .status()
                 .expect("garmentcode runs");
             assert!(status.success());
+            dir
+        });
+    let _ = std::fs::remove_dir_all(&root);
+}
+
+/// Samples per run of the command benchmark with meshes.
+const MESH_CLI_SAMPLES: u64 = 500;
+
+#[divan::bench(args = [2], sample_count = 3, sample_size = 1)]
+fn cli_mesh(bencher: divan::Bencher, jobs: usize) {
+    static RUN: AtomicUsize = AtomicUsize::new(0);
+    let base = std::env::var_os("GARMENTCODE_BENCH_DIR").map_or_else(std::env::temp_dir, PathBuf::from);
+    let root = base.join(format!("garmentcode-bench-mesh-{}", std::process::id()));
+    bencher
+        .counter(divan::counter::ItemsCount::new(MESH_CLI_SAMPLES))
+        .with_inputs(|| -> PathBuf {
+            let dir = root.join(RUN.fetch_add(1, Ordering::Relaxed).to_string());
+            let _ = std::fs::remove_dir_all(&dir);
+            dir
+        })
+        .bench_local_values(|dir: PathBuf| {
+            let status = Command::new(env!("CARGO_BIN_EXE_garmentcode"))
+                .args(["sample", "--n", &MESH_CLI_SAMPLES.to_string(), "--seed", &SEED.to_string(), "--jobs", &jobs.to_string()])
+                .args(["--formats", "json,mesh", "--layout", "shards"])
+                .arg("--out")
+                .arg(&dir)
+                .stderr(std::process::Stdio::null())
+                .status()
+                .expect("garmentcode runs");
+            assert!(status.success());
+            let _ = std::fs::remove_dir_all(&dir);
             dir
         });
     let _ = std::fs::remove_dir_all(&root);

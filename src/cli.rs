@@ -319,7 +319,7 @@ pub struct SampleArgs {
     /// Only the samples i with i % K == I (0 <= I < K).
     #[arg(long, value_name = "I/K")]
     pub shard: Option<String>,
-    /// Files per sample: a list of json, svg, png (default json; with --replay all three).
+    /// Files per sample: a list of json, svg, png, mesh (the simulation box mesh at 1 cm; default json; with --replay json,svg,png).
     #[arg(short, long, value_name = "LIST")]
     pub formats: Option<String>,
     /// Rebuild one sample, or one attempt of it, into DIR as `build` would.

@@ -5,7 +5,10 @@
 //! categorical parameter, see the drawing change each time; empty the garment and
 //! see the rejection explained over the last drawing; upload a design file and see
 //! the controls and drawing follow; download `specification.json` and the zip and
-//! check them against the library; change the body; draw a random design.
+//! check them against the library; change the body; draw a random design. And the
+//! 3D view: the box mesh drawn by WebGL (SwiftShader, the software renderer, in
+//! headless Chromium), rotated with the mouse, zoomed with the wheel, its seams
+//! shown and hidden, redrawn when a design value changes.
 //!
 //! Needs `chromium` and `chromedriver` (Debian: `apt-get install chromium
 //! chromium-driver`). The test is `#[ignore]`d, so a plain `cargo test` reports it
@@ -134,7 +137,11 @@ impl Browser {
             "browserName": "chrome",
             "goog:chromeOptions": {
                 "binary": chromium.to_string_lossy(),
-                "args": ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1400,900", "--no-first-run"],
+                // WebGL without a GPU: ANGLE on SwiftShader, which Chromium asks to be allowed explicitly.
+                "args": [
+                    "--headless=new", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+                    "--disable-dev-shm-usage", "--window-size=1400,900", "--no-first-run",
+                ],
                 "prefs": {
                     "download.default_directory": downloads.to_string_lossy(),
                     "download.prompt_for_download": false,
@@ -171,6 +178,12 @@ impl Browser {
 
     fn keys(&self, element: &str, text: &str) {
         self.cmd("POST", &format!("/element/{element}/value"), Some(json!({ "text": text })));
+    }
+
+    /// Perform W3C actions (one input source each), then release everything.
+    fn actions(&self, sources: Json) {
+        self.cmd("POST", "/actions", Some(json!({ "actions": sources })));
+        self.cmd("DELETE", "/actions", None);
     }
 
     fn js(&self, script: &str) -> Json {
@@ -282,26 +295,41 @@ design:
       v: 1.1
 ";
 
-#[test]
-#[ignore = "needs chromium and chromedriver: GARMENTCODE_BROWSER_TEST=1 cargo test --test browser -- --ignored"]
-fn a_user_designs_a_garment_in_the_browser() {
+/// A served configurator and a browser, with a scratch folder (screenshots,
+/// downloads) named after the test; `None` (the test is skipped, with a message)
+/// unless [`ENABLE`] is `1`.
+struct Session {
+    b: Browser,
+    url: String,
+    scratch: PathBuf,
+    downloads: PathBuf,
+    _server: Proc,
+}
+
+fn session(test: &str) -> Option<Session> {
     if std::env::var(ENABLE).as_deref() != Ok("1") {
         eprintln!(
             "\n*** SKIPPED the browser test: set {ENABLE}=1 to run it (needs chromium and chromedriver; .ci/run installs them and sets it) ***\n"
         );
-        return;
+        return None;
     }
-    let started = Instant::now();
     let chromium = find_program(&["chromium", "chromium-browser", "google-chrome"])
         .expect("the browser test needs chromium (apt-get install chromium chromium-driver)");
     let chromedriver = find_program(&["chromedriver"]).expect("the browser test needs chromedriver (apt-get install chromium-driver)");
-    let scratch = Path::new(env!("CARGO_TARGET_TMPDIR")).join("browser");
+    let scratch = Path::new(env!("CARGO_TARGET_TMPDIR")).join(test);
     let _ = std::fs::remove_dir_all(&scratch);
     let downloads = scratch.join("downloads");
     std::fs::create_dir_all(&downloads).unwrap();
-
-    let (_server, url) = start_server();
+    let (server, url) = start_server();
     let b = Browser::start(&chromium, &chromedriver, &downloads);
+    Some(Session { b, url, scratch, downloads, _server: server })
+}
+
+#[test]
+#[ignore = "needs chromium and chromedriver: GARMENTCODE_BROWSER_TEST=1 cargo test --test browser -- --ignored"]
+fn a_user_designs_a_garment_in_the_browser() {
+    let started = Instant::now();
+    let Some(Session { b, url, scratch, downloads, _server }) = session("browser") else { return };
 
     // The page loads, builds its controls from the schema and draws the t-shirt.
     b.goto(&url);
@@ -405,4 +433,171 @@ fn a_user_designs_a_garment_in_the_browser() {
     b.screenshot(&scratch.join("5-random.png"));
 
     eprintln!("browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
+}
+
+/// What the 3D view's canvas shows, read back from WebGL: the share of pixels
+/// that are not background, a coarse 16×16 map of the drawn pixels (to compare
+/// images), the pixels in the seams' colour, and the number of distinct colours.
+const READ_3D: &str = "
+    const c = document.getElementById('mesh3d');
+    const gl = c.getContext('webgl');
+    const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+    const px = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    const bg = [250, 249, 247], seam = [138, 46, 82];
+    const near = (i, c, d) => Math.abs(px[i] - c[0]) <= d && Math.abs(px[i + 1] - c[1]) <= d && Math.abs(px[i + 2] - c[2]) <= d;
+    let drawn = 0, seams = 0;
+    const grid = new Array(256).fill(0), colours = new Set();
+    for (let y = 0; y < h; y++) for (let x = 0; x < w; x++) {
+        const i = 4 * (y * w + x);
+        if (near(i, bg, 3)) continue;
+        drawn++;
+        if (near(i, seam, 12)) seams++;
+        grid[Math.floor(16 * y / h) * 16 + Math.floor(16 * x / w)]++;
+        colours.add((px[i] >> 5) * 64 + (px[i + 1] >> 5) * 8 + (px[i + 2] >> 5));
+    }
+    return { drawn: drawn / (w * h), grid, seams, colours: colours.size };";
+
+/// A picture of the 3D view.
+#[derive(Debug, PartialEq)]
+struct Picture {
+    drawn: f64,
+    grid: Vec<u64>,
+    seams: u64,
+    colours: u64,
+}
+
+impl Browser {
+    fn picture(&self) -> Picture {
+        let v = self.js(READ_3D);
+        Picture {
+            drawn: v["drawn"].as_f64().unwrap(),
+            grid: v["grid"].as_array().unwrap().iter().map(|x| x.as_u64().unwrap()).collect(),
+            seams: v["seams"].as_u64().unwrap(),
+            colours: v["colours"].as_u64().unwrap(),
+        }
+    }
+
+    /// Wait until the 3D view shows a picture for which `ok` holds (it is drawn on
+    /// the next animation frame after a change).
+    fn wait_picture(&self, what: &str, ok: impl Fn(&Picture) -> bool) -> Picture {
+        let t = Instant::now();
+        loop {
+            let p = self.picture();
+            if ok(&p) {
+                return p;
+            }
+            assert!(t.elapsed() < Duration::from_secs(20), "timed out waiting for {what}: {p:?}");
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    }
+
+    fn mesh_version(&self) -> u64 {
+        self.js("return Number(document.getElementById('mesh3d').dataset.version)").as_u64().unwrap()
+    }
+
+    /// Wait for a mesh newer than `after`, the page settled; its vertex count.
+    fn wait_mesh(&self, what: &str, after: u64) -> u64 {
+        let script = format!(
+            "const c = document.getElementById('mesh3d'), s = document.getElementById('status');
+             return Number(c.dataset.version) > {after} && s.dataset.idle === 'true' && (s.dataset.state === 'ok' || s.dataset.state === 'warning') ? Number(c.dataset.vertices) : null"
+        );
+        self.wait(what, 20, &script).as_u64().unwrap()
+    }
+}
+
+#[test]
+#[ignore = "needs chromium and chromedriver: GARMENTCODE_BROWSER_TEST=1 cargo test --test browser -- --ignored"]
+fn the_3d_view_shows_the_box_mesh() {
+    let started = Instant::now();
+    let Some(Session { b, url, scratch, _server, .. }) = session("browser-3d") else { return };
+    b.goto(&url);
+    b.wait_drawing("the first drawing", 0);
+
+    // Switch to 3D: the t-shirt's mesh, as the library makes it.
+    b.click(&b.find("#show-3d"));
+    let vertices = b.wait_mesh("the first mesh", 0);
+    assert_eq!(b.js("return document.getElementById('mesh3d').dataset.webgl"), "yes", "WebGL is available");
+    assert!(b.js("return document.getElementById('drawing').hidden").as_bool().unwrap(), "the 2D drawing is hidden");
+    let design = garmentcode::io::read_design(
+        garments::builtin::DESIGNS.iter().find(|(n, _)| *n == "t-shirt").unwrap().1,
+        "t-shirt",
+        &<garments::Design as garmentcode::Params>::design_space(),
+    )
+    .unwrap();
+    let body = garments::builtin::body("mean_all").unwrap();
+    let pattern = garments::build::build(&design, &body, "t-shirt").unwrap().pattern;
+    let mesh = garmentcode::mesh::BoxMesh::new(&pattern, garmentcode::mesh::DEFAULT_RESOLUTION).unwrap();
+    assert_eq!(vertices as usize, mesh.vertices.len());
+    let legend = b.js("return document.getElementById('mesh3d-legend').children.length").as_u64().unwrap();
+    assert_eq!(legend as usize, pattern.panels.len(), "one colour per panel in the legend");
+
+    // Something is drawn: a garment filling a good part of the view, in several colours, with seams.
+    let front = b.wait_picture("the mesh drawn", |p| p.drawn > 0.05);
+    assert!(front.colours >= 4, "panels in their colours, shaded: {front:?}");
+    assert!(front.seams > 50, "the seams are drawn: {front:?}");
+    b.screenshot(&scratch.join("1-3d.png"));
+
+    // Drag to rotate: another picture of the same garment.
+    let canvas = b.find("#mesh3d");
+    b.actions(json!([{
+        "type": "pointer", "id": "mouse", "parameters": { "pointerType": "mouse" },
+        "actions": [
+            { "type": "pointerMove", "duration": 0, "origin": { ELEMENT: canvas }, "x": 0, "y": 0 },
+            { "type": "pointerDown", "button": 0 },
+            { "type": "pointerMove", "duration": 200, "origin": "pointer", "x": 160, "y": 30 },
+            { "type": "pointerUp", "button": 0 },
+        ],
+    }]));
+    let turned = b.wait_picture("the rotated view", |p| p.grid != front.grid && p.drawn > 0.03);
+    b.screenshot(&scratch.join("2-rotated.png"));
+
+    // The wheel zooms in: the garment covers more of the view.
+    b.actions(json!([{
+        "type": "wheel", "id": "wheel",
+        "actions": [{ "type": "scroll", "duration": 0, "origin": { ELEMENT: canvas }, "x": 0, "y": 0, "deltaX": 0, "deltaY": -300 }],
+    }]));
+    let closer = b.wait_picture("the zoomed view", |p| p.drawn > turned.drawn * 1.2);
+
+    // Seams off and on with the stitches switch.
+    b.click(&b.find("#show-stitches"));
+    let plain = b.wait_picture("the view without seams", |p| p.seams * 4 < closer.seams);
+    b.click(&b.find("#show-stitches"));
+    b.wait_picture("the view with seams again", |p| p.seams > plain.seams * 4 && p.seams > 50);
+
+    // A design change updates the 3D view (with the usual debounce): a longer shirt, more vertices.
+    let before = b.picture();
+    let (v3, v2) = (b.mesh_version(), b.version());
+    b.click(&b.find("details[data-group='shirt'] > summary"));
+    let slider = b.find(".param[data-path='shirt.length'] input[type=range]");
+    b.keys(&slider, &"\u{E014}".repeat(20)); // ArrowRight
+    let longer = b.wait_mesh("the mesh of the longer shirt", v3);
+    assert!(longer > vertices, "a longer shirt has more vertices: {longer} vs {vertices}");
+    assert!(b.version() > v2, "the 2D drawing was updated too");
+    b.wait_picture("the longer shirt drawn", |p| p.grid != before.grid && p.drawn > 0.03);
+    b.screenshot(&scratch.join("3-longer.png"));
+
+    // Back to 2D: the drawing of the same pattern.
+    b.click(&b.find("#show-2d"));
+    assert!(b.js("return document.getElementById('view3d').hidden").as_bool().unwrap());
+    assert!(
+        b.js("return document.querySelector('#drawing svg') !== null && !document.getElementById('drawing').hidden").as_bool().unwrap()
+    );
+
+    // Without WebGL the 3D view says so, and the page goes on working.
+    b.goto(&url);
+    b.wait_drawing("the first drawing again", 0);
+    b.js("HTMLCanvasElement.prototype.getContext = () => null");
+    b.click(&b.find("#show-3d"));
+    let message = b.wait(
+        "the message without WebGL",
+        5,
+        "const m = document.getElementById('mesh3d-message'); return m.hidden ? null : m.textContent",
+    );
+    assert!(message.as_str().unwrap().contains("needs WebGL"), "{message}");
+    assert_eq!(b.js("return document.getElementById('mesh3d').dataset.webgl"), "no");
+    b.click(&b.find("#show-2d"));
+    assert!(b.js("return document.querySelector('#drawing svg') !== null").as_bool().unwrap());
+
+    eprintln!("3D browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
 }

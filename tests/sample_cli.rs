@@ -450,3 +450,42 @@ fn bad_shard_input_is_a_clear_error() {
     fail(&["--unpack", s(&dir.join("missing.tar")), "--out", s(&dir.join("u2"))], "cannot read");
     fail(&["--unpack", s(&shard), "--out", s(&dir.join("u3")), "--n", "3"], "cannot be used with");
 }
+
+#[test]
+fn mesh_samples_carry_the_box_mesh_in_both_layouts() {
+    let dir = scratch("mesh_samples");
+    let (folders, sharded, unpacked) = (dir.join("folders"), dir.join("sharded"), dir.join("unpacked"));
+    sample_ok(&["--n", "4", "--seed", "3", "--out", s(&folders), "--formats", "json,mesh"]);
+    sample_ok(&["--n", "4", "--seed", "3", "--out", s(&sharded), "--formats", "json,mesh", "--layout", "shards:2", "--jobs", "1"]);
+    for i in 0..4 {
+        let key = format!("rand_{i:07}");
+        let folder = folders.join(&key);
+        // The mesh is the pattern's: what `garmentcode mesh` makes of the sample's specification.
+        let remeshed = dir.join(format!("remeshed-{i}"));
+        let spec = folder.join(format!("{key}_specification.json"));
+        let out = Command::new(BIN).args(["mesh", s(&spec), "--out", s(&remeshed)]).output().unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        for suffix in garmentcode::mesh::write::FILE_SUFFIXES {
+            let file = format!("{key}{suffix}");
+            let ours = fs::read(folder.join(&file)).unwrap_or_else(|e| panic!("{key} lacks {file}: {e}"));
+            assert_eq!(ours, fs::read(remeshed.join(&file)).unwrap(), "{file} differs from garmentcode mesh's");
+        }
+        // One segmentation line per OBJ vertex.
+        let obj = fs::read_to_string(folder.join(format!("{key}_boxmesh.obj"))).unwrap();
+        let seg = fs::read_to_string(folder.join(format!("{key}_sim_segmentation.txt"))).unwrap();
+        assert_eq!(obj.lines().filter(|l| l.starts_with("v ")).count(), seg.lines().count());
+    }
+    // The shards hold the same files, and unpack to the folder layout.
+    let shards = shard_files(&sharded);
+    let names: Vec<String> = members(&shards["shard-000000.tar"]).into_iter().map(|m| m.0).collect();
+    assert!(names.contains(&"rand_0000001.boxmesh.obj".to_string()), "{names:?}");
+    let mut args = vec!["--unpack"];
+    let paths: Vec<String> = shards.keys().map(|k| s(&sharded.join(k)).to_string()).collect();
+    args.extend(paths.iter().map(String::as_str));
+    args.extend(["--out", s(&unpacked)]);
+    sample_ok(&args);
+    assert_eq!(samples(&unpacked), samples(&folders));
+    // A rerun with the same formats finds every sample whole.
+    let again = sample_ok(&["--n", "4", "--seed", "3", "--out", s(&sharded), "--formats", "json,mesh", "--layout", "shards:2"]);
+    assert!(again.contains("0 made") || again.contains("4 already there"), "{again}");
+}

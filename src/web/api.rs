@@ -4,8 +4,9 @@
 //!
 //! Everything a page or a tool needs goes through here: the design space (the
 //! page builds its controls from it), built-in designs and bodies, the pattern of a
-//! design on a body (drawing, `specification.json`, the reference's checks), random
-//! designs from the project's sampler, and the files of a design for download.
+//! design on a body (drawing, `specification.json`, the reference's checks), its
+//! simulation box mesh for the 3D view, random designs from the project's sampler,
+//! and the files of a design for download.
 //!
 //! Errors follow one rule: a request the server cannot read (malformed JSON, an
 //! unknown parameter, a value outside its range, an unknown body) is a 4xx answer
@@ -149,7 +150,7 @@ fn route_inner(req: &Request) -> Response {
     if let Some(name) = api.strip_prefix("/body/") {
         return if get { reply(builtin_body(name).map(|b| body_json(name, &b))) } else { allow("GET, HEAD") };
     }
-    const POSTS: [&str; 6] = ["/pattern", "/design", "/body", "/random", "/files", "/zip"];
+    const POSTS: [&str; 7] = ["/pattern", "/mesh", "/design", "/body", "/random", "/files", "/zip"];
     if !POSTS.contains(&api) {
         return error_response(&ApiError::new(404, format!("no such API endpoint: {path} (see GET /api)")));
     }
@@ -162,6 +163,7 @@ fn route_inner(req: &Request) -> Response {
     };
     let result = match api {
         "/pattern" => pattern_text(&input).map(|text| json_text_response(200, text)),
+        "/mesh" => mesh_text(&input).map(|text| json_text_response(200, text)),
         "/zip" => zip_archive(&input).map(|(name, bytes)| Response {
             status: 200,
             content_type: "application/zip",
@@ -221,7 +223,8 @@ fn index() -> Json {
     json!({
         "endpoints": [
             "GET /api/schema", "GET /api/json-schema", "GET /api/design/NAME", "GET /api/body/NAME",
-            "POST /api/design", "POST /api/body", "POST /api/pattern", "POST /api/random", "POST /api/files", "POST /api/zip"
+            "POST /api/design", "POST /api/body", "POST /api/pattern", "POST /api/mesh", "POST /api/random", "POST /api/files",
+            "POST /api/zip"
         ],
         "documentation": "README.md, section 'Web configurator and its API'",
     })
@@ -566,12 +569,19 @@ thread_local! {
     static ARENA: RefCell<Arena> = RefCell::new(Arena::new());
 }
 
-fn evaluate(input: &Json) -> ApiResult<Evaluation> {
+/// Refuses a request with a key outside `allowed`.
+fn check_keys(input: &Json, allowed: &[&str]) -> ApiResult<()> {
     for k in input.as_object().map(|m| m.keys().collect::<Vec<_>>()).unwrap_or_default() {
-        if !["design", "body", "name", "layout"].contains(&k.as_str()) {
-            return Err(ApiError::bad(format!("unknown key \"{k}\" (expected design, body, name and layout)")));
+        if !allowed.contains(&k.as_str()) {
+            let (last, first) = allowed.split_last().unwrap_or((&"", &[]));
+            return Err(ApiError::bad(format!("unknown key \"{k}\" (expected {} and {last})", first.join(", "))));
         }
     }
+    Ok(())
+}
+
+fn evaluate(input: &Json) -> ApiResult<Evaluation> {
+    check_keys(input, &["design", "body", "name", "layout"])?;
     let name = pattern_name(input)?;
     let values = design_values(input.get("design"))?;
     let (body_name, body) = body_from(input.get("body"))?;
@@ -638,6 +648,107 @@ pub fn pattern_text(input: &Json) -> ApiResult<String> {
 pub fn pattern(input: &Json) -> ApiResult<Json> {
     let text = pattern_text(input)?;
     serde_json::from_str(&text).map_err(|e| ApiError::new(500, format!("internal error: {e}")))
+}
+
+/// Finest and coarsest mesh resolution `POST /api/mesh` accepts (cm): the finest is
+/// the reference simulator's default, which bounds a garment's mesh to some tens of
+/// thousands of vertices.
+pub const MESH_RESOLUTION: [f64; 2] = [garmentcode::mesh::DEFAULT_RESOLUTION, 10.0];
+
+/// `POST /api/mesh` `{"design", "body", "name", "resolution"}`: the simulation box
+/// mesh of the pattern ([`garmentcode::mesh::BoxMesh`], at `resolution` cm, default
+/// 1), for the page's 3D view, as JSON text:
+///
+/// - `ok`, `name`, `resolution`, `vertices` and `faces` (counts);
+/// - `positions`: `x, y, z` of every vertex in cm (to 0.01 cm), flat;
+/// - `triangles`: three vertex indices per face, flat, wound like the panel outline;
+/// - `panels`: `{"name", "first_face", "faces"}` in panel order (the faces of a
+///   panel are consecutive; a vertex on a stitch belongs to two panels, a face to one);
+/// - `stitches`: per stitch, the indices of its merged vertices from one end to the
+///   other (the seam, to draw as a line);
+/// - `bounds`: `{"min": [x, y, z], "max": [x, y, z]}` of the positions.
+///
+/// A design the library refuses, or a pattern that cannot be meshed, is
+/// `ok: false` with the reason, as for [`pattern_text`].
+pub fn mesh_text(input: &Json) -> ApiResult<String> {
+    check_keys(input, &["design", "body", "name", "resolution"])?;
+    let [lo, hi] = MESH_RESOLUTION;
+    let resolution = match input.get("resolution") {
+        None | Some(Json::Null) => garmentcode::mesh::DEFAULT_RESOLUTION,
+        Some(v) => v
+            .as_f64()
+            .filter(|r| (lo..=hi).contains(r))
+            .ok_or_else(|| ApiError::bad(format!("resolution: expected a number of cm from {lo} to {hi}, got {v}")))?,
+    };
+    let name = pattern_name(input)?;
+    let values = design_values(input.get("design"))?;
+    let (_, body) = body_from(input.get("body"))?;
+    let design = typed_design(&values)?;
+    let built = ARENA.with(|a| garments::build::build_in(&mut a.borrow_mut(), &design, &body, &name)).map_err(|e| e.to_string());
+    let mesh = built
+        .and_then(|b| garmentcode::mesh::BoxMesh::new(&b.pattern, resolution).map_err(|e| format!("the pattern cannot be meshed: {e}")));
+    Ok(match mesh {
+        Err(reason) => json!({ "ok": false, "name": name, "error": reason, "problems": [reason] }).to_string(),
+        Ok(m) => mesh_json(&m),
+    })
+}
+
+/// The JSON text of [`mesh_text`] for a mesh, written directly (a mesh has some
+/// hundred thousand numbers).
+fn mesh_json(m: &garmentcode::mesh::BoxMesh) -> String {
+    use std::fmt::Write;
+    // 0.01 cm, without a negative zero; a rounded value prints as its shortest decimal.
+    let cm = |x: f64| (x * 100.0).round() / 100.0 + 0.0;
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for v in &m.vertices {
+        for (k, x) in v.to_array().into_iter().enumerate() {
+            lo[k] = lo[k].min(cm(x));
+            hi[k] = hi[k].max(cm(x));
+        }
+    }
+    let mut panels = Vec::with_capacity(m.panels.len());
+    let mut first = 0;
+    for (i, p) in m.panels.iter().enumerate() {
+        let n = m.faces[first..].iter().take_while(|f| f.panel == i).count();
+        panels.push(json!({ "name": p.name, "first_face": first, "faces": n }));
+        first += n;
+    }
+    let stitches: Vec<Vec<usize>> = m
+        .stitches
+        .iter()
+        .map(|s| {
+            let (p, e) = s.sides[1];
+            let panel = &m.panels[p];
+            panel.edges[e].local.iter().map(|&l| panel.global[l]).collect()
+        })
+        .collect();
+    let head = json!({
+        "ok": true,
+        "name": m.name,
+        "resolution": m.resolution,
+        "vertices": m.vertices.len(),
+        "faces": m.faces.len(),
+        "panels": panels,
+        "stitches": stitches,
+        "bounds": { "min": lo, "max": hi },
+    });
+    let mut text = head.to_string();
+    text.pop(); // the closing brace
+    text.reserve(m.vertices.len() * 24 + m.faces.len() * 18);
+    text.push_str(",\"positions\":[");
+    for (i, v) in m.vertices.iter().enumerate() {
+        let sep = if i == 0 { "" } else { "," };
+        let _ = write!(text, "{sep}{},{},{}", cm(v.x), cm(v.y), cm(v.z));
+    }
+    text.push_str("],\"triangles\":[");
+    for (i, f) in m.faces.iter().enumerate() {
+        let sep = if i == 0 { "" } else { "," };
+        let [a, b, c] = f.vertices;
+        let _ = write!(text, "{sep}{a},{b},{c}");
+    }
+    text.push_str("]}");
+    text
 }
 
 /// `POST /api/random` `{"seed", "body"}`: a random design from the dataset

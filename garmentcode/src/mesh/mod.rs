@@ -12,11 +12,15 @@
 //! 2. **Per-panel vertices.** Stitched edges first, then free edges, each as its start
 //!    corner (unless already present), its interior samples, its end corner; the panel's
 //!    first `n_stitch_side` local vertices are those of stitched edges.
-//! 3. **Triangulation.** A constrained Delaunay triangulation of the sampled outline
-//!    (`spade`), refined inside to a minimum angle of about 20.7° and edges of at most
-//!    `1.43·res`, never splitting the outline: no extra boundary points. The even–odd rule
-//!    decides what is inside. Faces are wound like the outline (the panel normal is
-//!    decided, as in the reference, by the outline points lying on its bounding box).
+//! 3. **Triangulation.** Interior points are laid out, not searched for: a row along the
+//!    outline (one point over the middle of each outline segment, so the triangles on the
+//!    outline are about isosceles) and an equilateral lattice of spacing `res` inside it,
+//!    whose triangles are kept as they are. A constrained Delaunay triangulation (`spade`)
+//!    fills only the strip between the outline and the lattice, never splitting the
+//!    outline: no extra boundary points. Strip edges longer than `1.43·res` are split. The
+//!    even–odd rule decides what is inside. Faces are wound like the outline (the panel
+//!    normal is decided, as in the reference, by the outline points lying on its bounding
+//!    box).
 //! 4. **Stitching.** Per stitch, side 0's vertex range is reversed unless the stitch is
 //!    `right_wrong`, and pairs are merged into global stitch vertices (midpoints,
 //!    sequentially averaged), each labelled `stitch_k` ([`VertexLabel`]).
@@ -41,9 +45,9 @@
 
 mod curve;
 mod triangulate;
-pub mod write;
 
-use std::collections::HashMap;
+use triangulate::HashMap;
+pub mod write;
 
 use thiserror::Error;
 
@@ -337,7 +341,7 @@ impl BoxMesh {
         let mut estimate = 0.0;
         for (pi, p) in specs.iter().enumerate() {
             let mut points: Vec<Vec2> = Vec::new();
-            let mut seen: HashMap<[u64; 2], usize> = HashMap::new();
+            let mut seen: HashMap<[u64; 2], usize> = HashMap::default();
             let mut edges: Vec<EdgeSamples> = vec![EdgeSamples { local: Vec::new(), stitch: None, length: 0.0 }; p.edges.len()];
             let mut samples: Vec<Vec<Vec2>> = Vec::with_capacity(p.edges.len());
             for (i, (c, _)) in curves[pi].iter().enumerate() {
@@ -416,7 +420,7 @@ impl BoxMesh {
 
         // Stitch vertices.
         let mut globals: Vec<GlobalStitch> = Vec::new();
-        let mut loc_glob: HashMap<(usize, usize), usize> = HashMap::new();
+        let mut loc_glob: HashMap<(usize, usize), usize> = HashMap::default();
         for (k, s) in stitches.iter().enumerate() {
             let [(p0, e0), (p1, e1)] = s.sides;
             let mut r0 = panels[p0].edges[e0].local.clone();

@@ -1,25 +1,47 @@
-//! Refined constrained Delaunay triangulation of one panel (by `spade`).
+//! Constrained Delaunay triangulation of one panel (by `spade`) with interior points
+//! laid out in advance.
 //!
-//! The sampled outline is the constraint set; refinement never splits a constraint,
-//! so the boundary stays exactly the sampled polyline. Inside is the even–odd rule
-//! across constraints (a doubly covered region of a self-crossing outline is outside).
-//! After `spade`'s quality refinement (minimum angle ≈ 20.7°, an area bound) the
-//! remaining inside edges longer than the size bound are split at their midpoints and
-//! the mesh is refined again, so every inside edge ends up at most `1.43·res` long
-//! (the reference mesher's size criterion).
+//! The sampled outline is the constraint set and is never split: the boundary stays
+//! exactly the sampled polyline. Interior points come from an equilateral lattice of
+//! spacing [`LATTICE_SPACING`]`·res` clipped to the panel (even–odd rule, scanline) and
+//! kept at least [`BOUNDARY_CLEARANCE`]`·res` from the outline, so the triangles along
+//! the outline are not slivers. One bulk load triangulates outline and lattice at once
+//! (an outline that crosses itself or repeats a point is inserted constraint by
+//! constraint instead, crossings becoming vertices). Inside edges still longer than the
+//! size bound (between the outline and the first lattice row) are split at their
+//! midpoints until every inside edge is at most `1.43·res`, the reference mesher's size
+//! criterion.
+//!
+//! This replaces quality refinement (spade's `refine`, Ruppert-style, which locates and
+//! tests every candidate point) because a lattice is already a quality mesh: it costs
+//! one bulk load instead of thousands of incremental insertions.
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::VecDeque;
 
 use spade::handles::{FixedFaceHandle, InnerTag};
-use spade::{AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation};
+use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
 use crate::Vec2;
 
+/// Hash maps of the mesher: fast, fixed-seed hashing of small integer keys.
+pub(crate) type HashMap<K, V> = std::collections::HashMap<K, V, foldhash::fast::FixedState>;
+
 type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
-type VertexHandle<'a> = spade::handles::VertexHandle<'a, Point2<f64>, (), spade::CdtEdge<()>, ()>;
 
 /// Size bound of triangle edges, in units of the resolution.
 pub const SIZE_BOUND: f64 = 1.43;
+
+/// Spacing of the interior lattice, in units of the resolution.
+const LATTICE_SPACING: f64 = 1.0;
+
+/// Least distance of a lattice point from the row along the outline, in units of the resolution.
+const BOUNDARY_CLEARANCE: f64 = 0.4;
+
+/// Height of the row of points along the outline, in units of the resolution.
+const ROW_HEIGHT: f64 = 0.75;
+
+/// Least distance between points of the row along the outline, in units of the resolution.
+const ROW_SPACING: f64 = 0.45;
 
 /// A triangulated panel.
 #[derive(Clone, Debug)]
@@ -33,36 +55,62 @@ pub(crate) struct PanelTriangulation {
 
 /// Triangulates the region bounded by `segments` between `boundary` points.
 pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) -> Result<PanelTriangulation, String> {
-    let mut cdt = Cdt::new();
-    let mut handle = Vec::with_capacity(boundary.len());
-    for p in boundary {
-        let h = cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("point ({}, {}) cannot be triangulated: {e:?}", p.x, p.y))?;
-        handle.push(h);
-    }
-    let mut crossing = add_outline(&mut cdt, &handle, segments);
     let max_len = SIZE_BOUND * res;
-    // Area of an equilateral triangle somewhat below the size bound: CGAL's size
-    // criterion yields triangles of about this size.
-    let max_area = 3f64.sqrt() / 4.0 * (0.85 * max_len).powi(2);
-    let region = bbox_area(boundary);
-    let budget = (8.0 * region / (res * res)) as usize + 10 * boundary.len() + 1000;
-    let params = || {
-        RefinementParameters::<f64>::new()
-            .with_angle_limit(AngleLimit::from_radius_to_shortest_edge_ratio(2f64.sqrt()))
-            .with_max_allowed_area(max_area)
-            .exclude_outer_faces(true)
-            .with_max_additional_vertices(budget)
+    let (row, lattice) = interior_points(boundary, segments, res);
+    // The lattice's own triangles are kept as they are; the Delaunay triangulation only
+    // fills the strip between the outline and them (the outline, the row, the lattice
+    // points on the strip's inner border or in no lattice triangle), with the border's
+    // edges as constraints: by the even–odd rule the strip is inside and the lattice's
+    // triangles are not.
+    let (lattice_faces, border) = lattice.triangles();
+    let mut in_cdt = vec![true; lattice.points.len()];
+    lattice_faces.iter().flatten().for_each(|&i| in_cdt[i] = false);
+    border.iter().flatten().for_each(|&i| in_cdt[i] = true);
+    // The outline is triangulated nudged too (equal points equally), and kept exact in the output.
+    let nudged: Vec<Vec2> = boundary.iter().map(|p| *p + nudge(p.x.to_bits(), p.y.to_bits(), res)).collect();
+    let mut all: Vec<Point2<f64>> = nudged.iter().chain(&row).map(|p| Point2::new(p.x, p.y)).collect();
+    let mut cdt_index = vec![usize::MAX; lattice.points.len()];
+    for (i, p) in lattice.points.iter().enumerate() {
+        if in_cdt[i] {
+            cdt_index[i] = all.len();
+            all.push(Point2::new(p.x, p.y));
+        }
+    }
+    let n_bulk = all.len();
+    let mut edges: Vec<[usize; 2]> = segments.iter().copied().filter(|[a, b]| a != b).collect();
+    edges.extend(border.iter().map(|e| e.map(|i| cdt_index[i])));
+    let mut conflicts = false;
+    let bulk = Cdt::try_bulk_load_cdt(all, edges, |_| conflicts = true).map_err(|e| format!("panel cannot be triangulated: {e:?}"))?;
+    // Bulk loading keeps the vertex order unless points repeat: then, and for crossing
+    // outlines, the outline goes in constraint by constraint and every interior point
+    // into the triangulation.
+    let (mut cdt, handle, crossing, lattice_faces) = if !conflicts && bulk.num_vertices() == n_bulk {
+        (bulk, (0..boundary.len()).collect::<Vec<usize>>(), HashMap::default(), lattice_faces)
+    } else {
+        let mut cdt = Cdt::new();
+        let mut handle = Vec::with_capacity(boundary.len());
+        for p in &nudged {
+            handle.push(cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("point ({}, {}) cannot be triangulated: {e:?}", p.x, p.y))?);
+        }
+        let crossing = add_outline(&mut cdt, &handle, segments);
+        for p in row.iter().chain(&lattice.points) {
+            cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("interior point cannot be inserted: {e:?}"))?;
+        }
+        cdt_index.clear();
+        (cdt, handle.iter().map(|h| h.index()).collect(), crossing, Vec::new())
     };
-    cdt.refine(params());
+
+    // Split inside edges longer than the size bound (never outline edges) at their midpoints.
+    let budget = cdt.num_vertices() + 4 * boundary.len() + 1000;
+    let mut inside = inside_faces(&cdt);
     for _ in 0..8 {
-        let inside = inside_faces(&cdt);
         let mut splits: Vec<Point2<f64>> = Vec::new();
         for f in &inside {
             for e in cdt.face(*f).adjacent_edges() {
                 if e.is_constraint_edge() || e.length_2() <= max_len * max_len {
                     continue;
                 }
-                // Each undirected edge once: from its lower-index end.
+                // Each undirected edge once: from its lower-index end, or from its only inside face.
                 let [a, b] = [e.from(), e.to()];
                 if a.fix().index() < b.fix().index() || e.rev().face().as_inner().is_none() {
                     let (pa, pb) = (a.position(), b.position());
@@ -73,77 +121,21 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) 
         if splits.is_empty() {
             break;
         }
-        if cdt.num_vertices() + splits.len() > boundary.len() + 2 * budget {
+        if cdt.num_vertices() + splits.len() > budget {
             return Err("triangulation exceeds its size budget".into());
         }
         for p in splits {
             cdt.insert(p).map_err(|e| format!("refinement point cannot be inserted: {e:?}"))?;
         }
-        cdt.refine(params());
+        inside = inside_faces(&cdt);
     }
 
-    // Points the refinement put on the outline (on a constraint) are dropped and the
-    // panel triangulated afresh from the outline and the interior points.
-    let is_input = {
-        let mut v = vec![false; cdt.num_vertices()];
-        handle.iter().for_each(|h| v[h.index()] = true);
-        v
-    };
-    // On the outline: an end of a constraint, or within 1% of the resolution of a
-    // constraint edge opposite to it in one of its triangles.
-    let eps = 0.01 * res;
-    let on_outline = |v: VertexHandle| {
-        v.out_edges().any(|e| {
-            if e.is_constraint_edge() {
-                return true;
-            }
-            let opposite = e.next();
-            !e.face().is_outer() && opposite.is_constraint_edge() && {
-                let [a, b] = [opposite.from().position(), opposite.to().position()];
-                segment_distance(v.position(), a, b) < eps
-            }
-        })
-    };
-    if cdt.vertices().any(|v| !is_input[v.fix().index()] && on_outline(v)) {
-        let inside = inside_faces(&cdt);
-        let mut used = vec![false; cdt.num_vertices()];
-        for f in &inside {
-            for v in cdt.face(*f).vertices() {
-                used[v.fix().index()] = true;
-            }
-        }
-        let interior: Vec<Point2<f64>> = cdt
-            .vertices()
-            .filter(|v| used[v.fix().index()] && !is_input[v.fix().index()] && !on_outline(*v))
-            .map(|v| v.position())
-            .collect();
-        let distinct = handle.iter().enumerate().all(|(i, h)| h.index() == i);
-        if crossing.is_empty() && distinct {
-            // Outline without crossings or repeated points: bulk loading keeps the vertex order.
-            let mut all: Vec<Point2<f64>> = boundary.iter().map(|p| Point2::new(p.x, p.y)).collect();
-            all.extend(interior);
-            let edges: Vec<[usize; 2]> = segments.iter().copied().filter(|[a, b]| a != b).collect();
-            cdt = Cdt::bulk_load_cdt(all, edges).map_err(|e| format!("panel cannot be triangulated: {e:?}"))?;
-        } else {
-            cdt = Cdt::new();
-            handle.clear();
-            for p in boundary {
-                handle.push(cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("point cannot be triangulated: {e:?}"))?);
-            }
-            crossing = add_outline(&mut cdt, &handle, segments);
-            for p in interior {
-                cdt.insert(p).map_err(|e| format!("interior point cannot be inserted: {e:?}"))?;
-            }
-        }
-    }
-
-    let inside = inside_faces(&cdt);
     // Spade vertex index → output index: boundary vertices keep theirs, added vertices
     // used by inside faces are numbered after them in insertion order.
     let mut map: Vec<usize> = vec![usize::MAX; cdt.num_vertices()];
-    for (i, h) in handle.iter().enumerate() {
-        if map[h.index()] == usize::MAX {
-            map[h.index()] = i;
+    for (i, &h) in handle.iter().enumerate() {
+        if map[h] == usize::MAX {
+            map[h] = i;
         }
     }
     let mut used = vec![false; cdt.num_vertices()];
@@ -165,25 +157,239 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) 
             points.push(Vec2::new(p.x, p.y));
         }
     }
-    let mut seen = std::collections::HashSet::new();
-    let faces = inside
-        .iter()
-        .map(|f| cdt.face(*f).vertices().map(|v| map[v.fix().index()]))
-        .filter(|[a, b, c]| a != b && b != c && a != c)
-        .filter(|f| {
-            let mut key = *f;
+    let mut faces: Vec<[usize; 3]> = inside.iter().map(|f| cdt.face(*f).vertices().map(|v| map[v.fix().index()])).collect();
+    // Then the lattice points inside the lattice's triangles, and those triangles.
+    let mut lattice_out: Vec<usize> = cdt_index.iter().map(|&c| if c == usize::MAX { usize::MAX } else { map[c] }).collect();
+    for f in &lattice_faces {
+        for &i in f {
+            if lattice_out[i] == usize::MAX {
+                lattice_out[i] = points.len();
+                points.push(lattice.points[i]);
+            }
+        }
+        faces.push(f.map(|i| lattice_out[i]));
+    }
+    if !crossing.is_empty() {
+        // Crossings mapped onto segment starts collapse or repeat faces.
+        let mut seen = std::collections::HashSet::new();
+        faces.retain(|&[a, b, c]| {
+            let mut key = [a, b, c];
             key.sort_unstable();
-            seen.insert(key)
-        })
-        .collect();
+            a != b && b != c && a != c && seen.insert(key)
+        });
+    }
     Ok(PanelTriangulation { points, faces })
+}
+
+/// The interior points: a row along the outline, one point over the middle of each
+/// outline segment at [`ROW_HEIGHT`]`·res` (so the triangles on the outline are about
+/// isosceles, as a quality mesher makes them), and the lattice inside that row.
+fn interior_points(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) -> (Vec<Vec2>, Lattice) {
+    let (mut lo, mut hi) = (Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY));
+    for p in boundary {
+        lo = lo.min(*p);
+        hi = hi.max(*p);
+    }
+    let t = ROW_HEIGHT * res;
+    let clearance = t + BOUNDARY_CLEARANCE * res;
+    let near = SegmentGrid::new(boundary, segments, lo, hi, clearance);
+    let mut grid = PointGrid::new(lo, hi, ROW_SPACING * res);
+    let mut row = Vec::new();
+    for &[a, b] in segments {
+        let (pa, pb) = (boundary[a], boundary[b]);
+        let d = pb - pa;
+        let len = d.length();
+        if len.is_nan() || len <= 0.0 {
+            continue;
+        }
+        // The outline runs counter-clockwise: inside is on the left.
+        let q = (pa + pb) / 2.0 + Vec2::new(-d.y, d.x) / len * t + nudge(a as u64, b as u64, res);
+        if !near.within(q, 0.8 * t) && !grid.within(q) {
+            grid.insert(q);
+            row.push(q);
+        }
+    }
+    // A lattice point is at least `BOUNDARY_CLEARANCE·res` farther from the outline than
+    // any row point (a row point is at most `t` from it), so farther than `ROW_SPACING·res`
+    // from every row point.
+    (row, Lattice::new(boundary, segments, &near, LATTICE_SPACING * res, clearance, lo, hi))
+}
+
+/// The points of an equilateral lattice of spacing `h` inside the outline (even–odd rule)
+/// and at least `clearance` away from it. Rows are `h·√3/2` apart, odd rows shifted by
+/// `h/2`; a point's place is its row and its column in half spacings.
+struct Lattice {
+    points: Vec<Vec2>,
+    /// Index + 1 of the point at `row · width + column`, 0 for none.
+    slot: Vec<u32>,
+    rows: usize,
+    width: usize,
+}
+
+impl Lattice {
+    fn new(boundary: &[Vec2], segments: &[[usize; 2]], near: &SegmentGrid, h: f64, clearance: f64, lo: Vec2, hi: Vec2) -> Lattice {
+        let size = hi - lo;
+        let dy = h * 3f64.sqrt() / 2.0;
+        let mut lattice = Lattice { points: Vec::new(), slot: Vec::new(), rows: 0, width: 0 };
+        if !(size.x > 2.0 * clearance && size.y > 2.0 * clearance) {
+            return lattice;
+        }
+        let rows = ((size.y - 2.0 * clearance) / dy).floor() as usize + 1;
+        // Centred in the bounding box; columns k from `k_min` (spares on each side).
+        let y0 = lo.y + (size.y - (rows - 1) as f64 * dy) / 2.0;
+        let cx = (lo.x + hi.x) / 2.0;
+        let k_min = ((lo.x - cx) / h).floor() as i64 - 2;
+        let k_max = ((hi.x - cx) / h).ceil() as i64 + 2;
+        let width = 2 * (k_max - k_min + 1) as usize;
+        lattice.rows = rows;
+        lattice.width = width;
+        lattice.slot = vec![0; rows * width];
+        let mut crossings: Vec<f64> = Vec::new();
+        for r in 0..rows {
+            let y = y0 + r as f64 * dy;
+            crossings.clear();
+            for &[a, b] in segments {
+                let (pa, pb) = (boundary[a], boundary[b]);
+                if (pa.y <= y) != (pb.y <= y) {
+                    crossings.push(pa.x + (y - pa.y) * (pb.x - pa.x) / (pb.y - pa.y));
+                }
+            }
+            crossings.sort_by(f64::total_cmp);
+            let shift = if r % 2 == 0 { 0.0 } else { h / 2.0 };
+            for span in crossings.chunks_exact(2) {
+                let (x0, x1) = (span[0] + clearance, span[1] - clearance);
+                if x1 < x0 {
+                    continue;
+                }
+                // Columns cx + shift + k·h within [x0, x1].
+                let k0 = ((x0 - cx - shift) / h).ceil() as i64;
+                let k1 = ((x1 - cx - shift) / h).floor() as i64;
+                for k in k0..=k1 {
+                    let p = Vec2::new(cx + shift + k as f64 * h, y) + nudge(r as u64, k as u64, h);
+                    if !near.within(p, clearance) {
+                        let column = 2 * (k - k_min) as usize + r % 2;
+                        lattice.slot[r * width + column] = lattice.points.len() as u32 + 1;
+                        lattice.points.push(p);
+                    }
+                }
+            }
+        }
+        lattice
+    }
+
+    /// The point at `row`, `column`, if any.
+    fn at(&self, row: usize, column: usize) -> Option<usize> {
+        if row >= self.rows || column >= self.width {
+            return None;
+        }
+        self.slot[row * self.width + column].checked_sub(1).map(|i| i as usize)
+    }
+
+    /// The lattice's triangles (counter-clockwise) whose three corners are points, and
+    /// the edges on the border of their union (in exactly one of them), directed as in
+    /// their triangle. Per point at `(r, c)`: the upper triangle `(r, c) (r, c+2) (r+1, c+1)`
+    /// and the lower one `(r, c) (r+1, c+1) (r+1, c−1)`.
+    fn triangles(&self) -> (Vec<[usize; 3]>, Vec<[usize; 2]>) {
+        let upper = |r: usize, c: usize| Some([self.at(r, c)?, self.at(r, c + 2)?, self.at(r + 1, c + 1)?]);
+        let lower = |r: usize, c: usize| Some([self.at(r, c)?, self.at(r + 1, c + 1)?, self.at(r + 1, c.checked_sub(1)?)?]);
+        let (mut faces, mut border) = (Vec::new(), Vec::new());
+        let mut push = |f: [usize; 3], across: [Option<[usize; 3]>; 3]| {
+            faces.push(f);
+            for k in 0..3 {
+                if across[k].is_none() {
+                    border.push([f[k], f[(k + 1) % 3]]);
+                }
+            }
+        };
+        for r in 0..self.rows.saturating_sub(1) {
+            for c in 0..self.width {
+                // The triangles across each edge, in the edges' order.
+                if let Some(f) = upper(r, c) {
+                    push(f, [r.checked_sub(1).and_then(|q| lower(q, c + 1)), lower(r, c + 2), lower(r, c)]);
+                }
+                if let Some(f) = lower(r, c) {
+                    push(f, [upper(r, c), upper(r + 1, c - 1), c.checked_sub(2).and_then(|c| upper(r, c))]);
+                }
+            }
+        }
+        (faces, border)
+    }
+}
+
+/// Outline segments bucketed by the cells of a uniform grid that their bounding boxes,
+/// grown by the query distance, touch: a distance query reads one cell.
+struct SegmentGrid<'a> {
+    points: &'a [Vec2],
+    segments: &'a [[usize; 2]],
+    lo: Vec2,
+    cell: f64,
+    columns: usize,
+    rows: usize,
+    /// Cell `c`'s segments are `items[start[c]..start[c + 1]]`.
+    start: Vec<usize>,
+    items: Vec<u32>,
+}
+
+impl<'a> SegmentGrid<'a> {
+    fn new(points: &'a [Vec2], segments: &'a [[usize; 2]], lo: Vec2, hi: Vec2, reach: f64) -> Self {
+        // Cells twice the query distance (at most a million of them).
+        let size = hi - lo;
+        let cell = (2.0 * reach).max((size.x * size.y / 1e6).sqrt()).max(1e-9);
+        let columns = ((size.x / cell) as usize + 1).min(1 << 12);
+        let rows = ((size.y / cell) as usize + 1).min(1 << 12);
+        let cell = cell.max(size.x / columns as f64).max(size.y / rows as f64);
+        let mut grid = SegmentGrid { points, segments, lo, cell, columns, rows, start: vec![0; columns * rows + 1], items: Vec::new() };
+        for pass in 0..2 {
+            let mut fill = grid.start.clone();
+            for (s, &[a, b]) in segments.iter().enumerate() {
+                let (pa, pb) = (points[a], points[b]);
+                let (c0, r0) = grid.cell_of(pa.min(pb) - Vec2::splat(reach));
+                let (c1, r1) = grid.cell_of(pa.max(pb) + Vec2::splat(reach));
+                for r in r0..=r1 {
+                    for c in c0..=c1 {
+                        let i = r * columns + c;
+                        if pass == 0 {
+                            grid.start[i + 1] += 1;
+                        } else {
+                            grid.items[fill[i]] = s as u32;
+                            fill[i] += 1;
+                        }
+                    }
+                }
+            }
+            if pass == 0 {
+                for i in 0..columns * rows {
+                    grid.start[i + 1] += grid.start[i];
+                }
+                grid.items = vec![0; grid.start[columns * rows]];
+            }
+        }
+        grid
+    }
+
+    fn cell_of(&self, p: Vec2) -> (usize, usize) {
+        let q = (p - self.lo) / self.cell;
+        let c = (q.x.max(0.0) as usize).min(self.columns - 1);
+        let r = (q.y.max(0.0) as usize).min(self.rows - 1);
+        (c, r)
+    }
+
+    /// Whether some segment comes closer to `p` than `d`.
+    fn within(&self, p: Vec2, d: f64) -> bool {
+        let (c, r) = self.cell_of(p);
+        let i = r * self.columns + c;
+        self.items[self.start[i]..self.start[i + 1]].iter().any(|&s| {
+            let [a, b] = self.segments[s as usize];
+            segment_distance(p, self.points[a], self.points[b]) < d
+        })
+    }
 }
 
 /// Adds the outline segments as constraints, splitting crossing ones; returns the
 /// vertices created at crossings, each with the local id of the segment start that
 /// created it.
 fn add_outline(cdt: &mut Cdt, handle: &[spade::handles::FixedVertexHandle], segments: &[[usize; 2]]) -> HashMap<usize, usize> {
-    let mut crossing = HashMap::new();
+    let mut crossing = HashMap::default();
     for &[a, b] in segments {
         if handle[a] != handle[b] {
             let before = cdt.num_vertices();
@@ -227,21 +433,61 @@ fn inside_faces(cdt: &Cdt) -> Vec<FixedFaceHandle<InnerTag>> {
     cdt.inner_faces().filter(|f| parity[f.fix().index()] == Some(true)).map(|f| f.fix()).collect()
 }
 
+/// A fixed pseudo-random offset of at most 0.1% of `scale` per coordinate, keyed by `a`
+/// and `b`. A lattice is full of collinear points, and a row over a straight outline of
+/// cocircular ones (isosceles trapezoids): each such test sends the triangulation's exact
+/// predicates to their slow arithmetic, which nudged points avoid.
+fn nudge(a: u64, b: u64, scale: f64) -> Vec2 {
+    let unit = |salt: u64| {
+        let z = a.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ b.wrapping_mul(0xC2B2_AE3D_27D4_EB4F) ^ salt;
+        let z = (z ^ (z >> 31)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        (z >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    };
+    Vec2::new(unit(1), unit(2)) * 2e-3 * scale
+}
+
+/// Points in the cells of a uniform grid, for "is any point closer than the cell size" queries.
+struct PointGrid {
+    lo: Vec2,
+    cell: f64,
+    columns: usize,
+    rows: usize,
+    cells: HashMap<usize, Vec<Vec2>>,
+}
+
+impl PointGrid {
+    fn new(lo: Vec2, hi: Vec2, cell: f64) -> Self {
+        let size = hi - lo;
+        let columns = (size.x / cell) as usize + 1;
+        let rows = (size.y / cell) as usize + 1;
+        PointGrid { lo, cell, columns, rows, cells: HashMap::default() }
+    }
+
+    fn cell_of(&self, p: Vec2) -> (usize, usize) {
+        let q = (p - self.lo) / self.cell;
+        ((q.x.max(0.0) as usize).min(self.columns - 1), (q.y.max(0.0) as usize).min(self.rows - 1))
+    }
+
+    fn insert(&mut self, p: Vec2) {
+        let (c, r) = self.cell_of(p);
+        self.cells.entry(r * self.columns + c).or_default().push(p);
+    }
+
+    /// Whether a point of the grid is closer to `p` than the cell size.
+    fn within(&self, p: Vec2) -> bool {
+        let (c, r) = self.cell_of(p);
+        (r.saturating_sub(1)..=(r + 1).min(self.rows - 1)).any(|r| {
+            (c.saturating_sub(1)..=(c + 1).min(self.columns - 1))
+                .any(|c| self.cells.get(&(r * self.columns + c)).is_some_and(|v| v.iter().any(|q| (*q - p).length() < self.cell)))
+        })
+    }
+}
+
 /// Distance of `p` to the segment `a b`.
-fn segment_distance(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
-    let (p, a, b) = (Vec2::new(p.x, p.y), Vec2::new(a.x, a.y), Vec2::new(b.x, b.y));
+fn segment_distance(p: Vec2, a: Vec2, b: Vec2) -> f64 {
     let d = b - a;
     let t = if d.length_squared() > 0.0 { ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
     (p - (a + t * d)).length()
-}
-
-fn bbox_area(points: &[Vec2]) -> f64 {
-    let (mut lo, mut hi) = (Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY));
-    for p in points {
-        lo = lo.min(*p);
-        hi = hi.max(*p);
-    }
-    ((hi - lo).x * (hi - lo).y).max(0.0)
 }
 
 #[cfg(test)]

@@ -1,5 +1,5 @@
 //! `garmentcode sample --n N --seed S --out DIR [--design-space FILE.yaml]
-//! [--bodies NAME,NAME|DIR] [--jobs J] [--shard I/K] [--formats json,svg,png]
+//! [--bodies NAME,NAME|DIR] [--jobs J] [--shard I/K] [--formats json,svg,png,mesh]
 //! [--layout folders|shards[:N]]`: a dataset of random garments, as a folder per
 //! sample or as tar shards (see `shards`); `--unpack SHARD.tar... --out DIR` turns
 //! shards back into folders.
@@ -136,7 +136,8 @@ fn parse_formats(s: &str) -> Result<Formats, CliError> {
             "json" => f.json = true,
             "svg" => f.svg = true,
             "png" => f.png = true,
-            other => return Err(usage(format!("sample --formats: unknown format '{other}' (expected a list of json, svg, png)"))),
+            "mesh" => f.mesh = true,
+            other => return Err(usage(format!("sample --formats: unknown format '{other}' (expected a list of json, svg, png, mesh)"))),
         }
     }
     Ok(f)
@@ -290,21 +291,17 @@ pub fn run(args: SampleArgs) -> Result<i32, CliError> {
             let slots = todo_shards.len() as u64 * size;
             let index_of = |slot: u64| Some(todo_shards[(slot / size) as usize] * size + slot % size).filter(|&i| i < n);
             let work = |arena: &mut Arena, index: u64| store::draw(&settings, arena, index);
-            // Samples of shards in progress, written once a shard is complete.
-            let mut pending: BTreeMap<u64, Vec<(u64, Option<store::Files>)>> = BTreeMap::new();
+            // Shards in progress, each written as its samples come in.
+            let mut writers: BTreeMap<u64, shards::ShardWriter> = BTreeMap::new();
             let mut made = Vec::new();
             let out = &opts.out;
             let collect = |(record, files): (Record, Option<store::Files>)| {
                 let k = record.index / size;
-                let shard = pending.entry(k).or_default();
-                shard.push((record.index, files));
-                made.push(record);
-                if shard.len() == shards::range(k, size, n).count() {
-                    let mut samples = pending.remove(&k).unwrap_or_default();
-                    samples.sort_by_key(|s| s.0);
-                    let samples: Vec<(u64, store::Files)> = samples.into_iter().filter_map(|(i, f)| Some((i, f?))).collect();
-                    shards::write_shard(out, k, &samples)?;
+                let writer = writers.entry(k).or_insert_with(|| shards::ShardWriter::new(out, k, shards::range(k, size, n)));
+                if writer.add(record.index, files)? {
+                    writers.remove(&k);
                 }
+                made.push(record);
                 Ok(())
             };
             pool(jobs, slots, todo, index_of, work, collect)?;
@@ -373,7 +370,9 @@ fn pool<T: Send>(
 ) -> Result<(), CliError> {
     let next = AtomicU64::new(0);
     let stop = AtomicBool::new(false);
-    let (tx, rx) = mpsc::channel::<Result<T, String>>();
+    // Bounded, so that workers faster than the collector (a slow disk, large mesh
+    // files) wait instead of piling results up in memory.
+    let (tx, rx) = mpsc::sync_channel::<Result<T, String>>(16 * jobs);
     let mut error: Option<String> = None;
     let mut progress = progress::Progress::new(todo);
     let collector = std::thread::current();
@@ -407,7 +406,16 @@ fn pool<T: Send>(
                     if result.is_err() {
                         stop.store(true, Ordering::Relaxed);
                     }
-                    if tx.send(result).is_err() {
+                    let sent = match tx.try_send(result) {
+                        Ok(()) => Ok(()),
+                        // Full: wake the collector, then wait for room.
+                        Err(mpsc::TrySendError::Full(result)) => {
+                            collector.unpark();
+                            tx.send(result).map_err(|_| ())
+                        }
+                        Err(mpsc::TrySendError::Disconnected(_)) => Err(()),
+                    };
+                    if sent.is_err() {
                         break;
                     }
                 }
@@ -489,6 +497,13 @@ fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<
             if opts.formats.svg || opts.formats.png {
                 crate::commands::add_drawings(&mut set, &built.pattern, opts.formats.png, garmentcode::draw::Layout::Placed)
                     .map_err(|e| CliError::Failed(e.to_string()))?;
+            }
+            if opts.formats.mesh {
+                let mesh = garmentcode::mesh::BoxMesh::new(&built.pattern, garmentcode::mesh::DEFAULT_RESOLUTION)
+                    .map_err(|e| CliError::Failed(format!("{name}: cannot mesh the pattern: {e}")))?;
+                for (file, bytes) in mesh.files() {
+                    set.add(&file, bytes);
+                }
             }
             set.add("checks.json", built.checks.to_json());
         }

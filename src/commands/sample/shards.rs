@@ -17,7 +17,9 @@
 
 use super::store::{self, Files, Record, Settings};
 use garments::sample::sample_name;
+use std::collections::BTreeMap;
 use std::fs;
+use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
 /// Samples per shard when `--layout shards` gives no `:N`.
@@ -51,7 +53,8 @@ fn member_name(key: &str, file: &str) -> String {
 
 /// The folder file name of a member's suffix: the inverse of [`member_name`].
 fn folder_file_name(key: &str, rest: &str) -> String {
-    if rest == "specification.json" || rest.starts_with("pattern.") { format!("{key}_{rest}") } else { rest.to_string() }
+    let mesh_file = garmentcode::mesh::write::FILE_SUFFIXES.iter().any(|suffix| suffix.strip_prefix('_') == Some(rest));
+    if rest == "specification.json" || rest.starts_with("pattern.") || mesh_file { format!("{key}_{rest}") } else { rest.to_string() }
 }
 
 /// Split a member name into its sample index, key and suffix.
@@ -93,7 +96,9 @@ fn header(name: &str, size: u64) -> Result<[u8; BLOCK], String> {
     Ok(h)
 }
 
-/// A tar archive of `members` (name, bytes) in the order given.
+/// A tar archive of `members` (name, bytes) in the order given, in memory: what
+/// [`ShardWriter`] streams to its file (the tests hold it to that).
+#[cfg(test)]
 fn tar(members: &[(String, &[u8])]) -> Result<Vec<u8>, String> {
     let mut out = Vec::new();
     for (name, bytes) in members {
@@ -158,24 +163,69 @@ pub fn range(k: u64, size: u64, n: u64) -> std::ops::Range<u64> {
     (k * size).min(n)..((k + 1) * size).min(n)
 }
 
-/// Write shard `k` of `samples` (sorted by index) into `dir`: into a temporary
-/// file first, renamed whole.
-pub fn write_shard(dir: &Path, k: u64, samples: &[(u64, Files)]) -> Result<(), String> {
-    let mut members: Vec<(String, &[u8])> = Vec::new();
-    for (index, files) in samples {
-        let key = sample_name(*index);
-        let mut own: Vec<(String, &[u8])> = files.iter().map(|(f, b)| (member_name(&key, f), b.as_slice())).collect();
-        own.sort_by(|a, b| a.0.cmp(&b.0));
-        members.extend(own);
+/// A shard being written: each sample's members are appended to a temporary file in
+/// index order as the samples finish (one that finishes early waits in memory), and
+/// the file is renamed whole once the shard's last sample is in. Memory holds a few
+/// samples, not the shard; the bytes are those of [`tar`] over the shard's samples.
+pub struct ShardWriter {
+    range: std::ops::Range<u64>,
+    next: u64,
+    waiting: BTreeMap<u64, Option<Files>>,
+    file: Option<io::BufWriter<fs::File>>,
+    tmp: PathBuf,
+    target: PathBuf,
+}
+
+impl ShardWriter {
+    /// Shard `k` of `dir`, holding the samples of `range`.
+    pub fn new(dir: &Path, k: u64, range: std::ops::Range<u64>) -> ShardWriter {
+        let next = range.start;
+        ShardWriter { range, next, waiting: BTreeMap::new(), file: None, tmp: dir.join(tmp_name(k)), target: dir.join(shard_name(k)) }
     }
-    let bytes = tar(&members)?;
-    let (tmp, target) = (dir.join(tmp_name(k)), dir.join(shard_name(k)));
-    let result = fs::write(&tmp, bytes).and_then(|_| fs::rename(&tmp, &target));
-    if let Err(e) = result {
-        let _ = fs::remove_file(&tmp);
-        return Err(format!("cannot write {}: {e}", target.display()));
+
+    /// Takes sample `index`'s files (`None`: every design was rejected, no files);
+    /// returns whether the shard is complete (written and renamed).
+    pub fn add(&mut self, index: u64, files: Option<Files>) -> Result<bool, String> {
+        self.waiting.insert(index, files);
+        self.write_ready().map_err(|e| {
+            self.file = None;
+            let _ = fs::remove_file(&self.tmp);
+            format!("cannot write {}: {e}", self.target.display())
+        })
     }
-    Ok(())
+
+    fn write_ready(&mut self) -> io::Result<bool> {
+        while let Some(files) = self.waiting.remove(&self.next) {
+            if let Some(files) = files {
+                let key = sample_name(self.next);
+                let mut own: Vec<(String, &[u8])> = files.iter().map(|(f, b)| (member_name(&key, f), b.as_slice())).collect();
+                own.sort_by(|a, b| a.0.cmp(&b.0));
+                let out = self.open()?;
+                for (name, bytes) in own {
+                    out.write_all(&header(&name, bytes.len() as u64).map_err(io::Error::other)?)?;
+                    out.write_all(bytes)?;
+                    out.write_all(&[0; BLOCK][..bytes.len().next_multiple_of(BLOCK) - bytes.len()])?;
+                }
+            }
+            self.next += 1;
+        }
+        if self.next < self.range.end {
+            return Ok(false);
+        }
+        let out = self.open()?;
+        out.write_all(&[0; 2 * BLOCK])?;
+        let file = self.file.take().expect("opened").into_inner().map_err(io::IntoInnerError::into_error)?;
+        drop(file);
+        fs::rename(&self.tmp, &self.target)?;
+        Ok(true)
+    }
+
+    fn open(&mut self) -> io::Result<&mut io::BufWriter<fs::File>> {
+        if self.file.is_none() {
+            self.file = Some(io::BufWriter::with_capacity(1 << 20, fs::File::create(&self.tmp)?));
+        }
+        Ok(self.file.as_mut().expect("just opened"))
+    }
 }
 
 /// One line of the index: a sample's key, shard and garment.
@@ -334,5 +384,35 @@ mod tests {
         bad[3] ^= 1;
         assert!(untar(&bad).unwrap_err().contains("checksum"));
         assert!(untar(b"{\"not\": \"a tar\"}").unwrap_err().contains("not a tar"));
+    }
+
+    #[test]
+    fn a_streamed_shard_is_the_archive_of_its_samples_whatever_their_order() {
+        let dir = std::env::temp_dir().join(format!("garmentcode-shardwriter-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        fs::create_dir_all(&dir).unwrap();
+        let files = |i: u64| -> Files {
+            let key = sample_name(i);
+            vec![(format!("{key}_specification.json"), vec![b'{'; 700 + i as usize]), ("sample_info.json".into(), vec![b'x'; 3])]
+        };
+        let mut w = ShardWriter::new(&dir, 2, 20..24);
+        // 22 finishes first, 21 had every design rejected.
+        assert!(!w.add(22, Some(files(22))).unwrap());
+        assert!(!w.add(20, Some(files(20))).unwrap());
+        assert!(!dir.join(shard_name(2)).exists(), "renamed before the last sample");
+        assert!(!w.add(23, Some(files(23))).unwrap());
+        assert!(w.add(21, None).unwrap());
+        let written = fs::read(dir.join(shard_name(2))).unwrap();
+        let mut members: Vec<(String, Vec<u8>)> = Vec::new();
+        for i in [20, 22, 23] {
+            let key = sample_name(i);
+            let mut own: Vec<(String, Vec<u8>)> = files(i).into_iter().map(|(f, b)| (member_name(&key, &f), b)).collect();
+            own.sort();
+            members.extend(own);
+        }
+        let refs: Vec<(String, &[u8])> = members.iter().map(|(n, b)| (n.clone(), b.as_slice())).collect();
+        assert_eq!(written, tar(&refs).unwrap());
+        assert!(!dir.join(tmp_name(2)).exists());
+        let _ = fs::remove_dir_all(&dir);
     }
 }

@@ -23,12 +23,15 @@ pub struct Formats {
     pub svg: bool,
     /// `<name>_pattern.png`.
     pub png: bool,
+    /// The simulation box mesh at the default resolution: `<name>_boxmesh.obj` and the
+    /// other files of [`garmentcode::mesh::write::FILE_SUFFIXES`].
+    pub mesh: bool,
 }
 
 impl Formats {
     /// The names, in a fixed order.
     pub fn names(&self) -> Vec<&'static str> {
-        [(self.json, "json"), (self.svg, "svg"), (self.png, "png")].into_iter().filter(|f| f.0).map(|f| f.1).collect()
+        [(self.json, "json"), (self.svg, "svg"), (self.png, "png"), (self.mesh, "mesh")].into_iter().filter(|f| f.0).map(|f| f.1).collect()
     }
 
     /// Files a finished sample has for these formats.
@@ -42,6 +45,9 @@ impl Formats {
         }
         if self.png {
             out.push(format!("{name}_pattern.png"));
+        }
+        if self.mesh {
+            out.extend(garmentcode::mesh::write::FILE_SUFFIXES.iter().map(|suffix| format!("{name}{suffix}")));
         }
         out
     }
@@ -221,6 +227,12 @@ fn files_of(s: &Settings, sample: &Sample, record: &Record) -> Result<Files, Str
     }
     if s.formats.png {
         files.push((format!("{name}_pattern.png"), garmentcode::draw::to_png(pattern, &opts).map_err(|e| fail("PNG drawing", e))?));
+    }
+    if s.formats.mesh {
+        let mesh = garmentcode::mesh::BoxMesh::new(pattern, garmentcode::mesh::DEFAULT_RESOLUTION)
+            .map_err(|e| format!("{name}: cannot mesh the pattern: {e}"))?;
+        let suffixes = garmentcode::mesh::write::FILE_SUFFIXES;
+        files.extend(suffixes.iter().zip(mesh.files()).map(|(suffix, (_, bytes))| (format!("{name}{suffix}"), bytes)));
     }
     files.push(("design_params.yaml".into(), s.writer.write(&sample.design).into_bytes()));
     let pants = sample.design.meta.bottom == Some(garments::design::BottomKind::Pants);

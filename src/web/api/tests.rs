@@ -58,14 +58,20 @@ fn schema_lists_every_parameter_with_its_range_and_group() {
 
 #[test]
 fn the_page_and_its_files_are_served() {
-    for (path, ty) in [("/", "text/html"), ("/app.js", "text/javascript"), ("/style.css", "text/css"), ("/icon.svg", "image/svg+xml")] {
+    for (path, ty) in [
+        ("/", "text/html"),
+        ("/app.js", "text/javascript"),
+        ("/view3d.js", "text/javascript"),
+        ("/style.css", "text/css"),
+        ("/icon.svg", "image/svg+xml"),
+    ] {
         let r = route(&request("GET", path, ""));
         assert_eq!(r.status, 200, "{path}");
         assert!(r.content_type.starts_with(ty), "{path}: {}", r.content_type);
         assert!(!r.body.is_empty());
     }
     // Offline: nothing is loaded from elsewhere.
-    for path in ["/", "/app.js", "/style.css"] {
+    for path in ["/", "/app.js", "/view3d.js", "/style.css"] {
         let text = String::from_utf8(route(&request("GET", path, "")).body).unwrap();
         assert!(!text.contains("http://") && !text.contains("https://") && !text.contains("//cdn"), "{path} loads nothing external");
     }
@@ -345,4 +351,102 @@ fn warnings_explain_the_references_internal_errors() {
     let w: Vec<&str> = r["warnings"].as_array().unwrap().iter().map(|x| x.as_str().unwrap()).collect();
     assert!(w.iter().any(|x| x.contains("refuses this combination of parameters (Skirt2 ruffles + belt)")), "{w:?}");
     assert!(w.iter().all(|x| !x.contains("ERROR::")), "{w:?}");
+}
+
+#[test]
+fn mesh_of_a_design_is_the_librarys_box_mesh_in_compact_arrays() {
+    let input = json!({ "design": { "meta.upper": "Shirt", "meta.bottom": "SkirtCircle" }, "body": "mean_female", "name": "tee" });
+    let (status, r) = post("/api/mesh", input.clone());
+    assert_eq!(status, 200, "{r}");
+    assert_eq!(r["ok"], true);
+    assert_eq!(r["name"], "tee");
+    assert_eq!(r["resolution"], garmentcode::mesh::DEFAULT_RESOLUTION);
+
+    // The library's mesh of the same pattern.
+    let design = typed_design(&design_values(input.get("design")).unwrap()).unwrap();
+    let body = garments::builtin::body("mean_female").unwrap();
+    let pattern = garments::build::build(&design, &body, "tee").unwrap().pattern;
+    let mesh = garmentcode::mesh::BoxMesh::new(&pattern, garmentcode::mesh::DEFAULT_RESOLUTION).unwrap();
+
+    let n = r["vertices"].as_u64().unwrap() as usize;
+    let m = r["faces"].as_u64().unwrap() as usize;
+    assert_eq!((n, m), (mesh.vertices.len(), mesh.faces.len()));
+    let positions: Vec<f64> = r["positions"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    let triangles: Vec<usize> = r["triangles"].as_array().unwrap().iter().map(|x| x.as_u64().unwrap() as usize).collect();
+    assert_eq!(positions.len(), 3 * n);
+    assert_eq!(triangles.len(), 3 * m);
+    assert!(triangles.iter().all(|&v| v < n));
+    for (i, v) in mesh.vertices.iter().enumerate() {
+        let p = &positions[3 * i..3 * i + 3];
+        assert!((p[0] - v.x).abs() <= 0.005 + 1e-9 && (p[1] - v.y).abs() <= 0.005 + 1e-9 && (p[2] - v.z).abs() <= 0.005 + 1e-9);
+    }
+    for (k, f) in mesh.faces.iter().enumerate() {
+        assert_eq!(triangles[3 * k..3 * k + 3], f.vertices);
+    }
+    let (lo, hi) = (&r["bounds"]["min"], &r["bounds"]["max"]);
+    for k in 0..3 {
+        let axis = positions.iter().skip(k).step_by(3);
+        assert_eq!(lo[k].as_f64().unwrap(), axis.clone().copied().fold(f64::INFINITY, f64::min));
+        assert_eq!(hi[k].as_f64().unwrap(), axis.copied().fold(f64::NEG_INFINITY, f64::max));
+    }
+
+    // Panels: every face in exactly one panel's range, in order; the pattern's panels.
+    let panels = r["panels"].as_array().unwrap();
+    let mut names: Vec<&str> = panels.iter().map(|p| p["name"].as_str().unwrap()).collect();
+    let mut next = 0;
+    for (i, p) in panels.iter().enumerate() {
+        assert_eq!(p["first_face"].as_u64().unwrap() as usize, next);
+        let count = p["faces"].as_u64().unwrap() as usize;
+        assert!(count > 0, "{}", p["name"]);
+        assert!(mesh.faces[next..next + count].iter().all(|f| f.panel == i));
+        next += count;
+    }
+    assert_eq!(next, m);
+    names.sort_unstable();
+    let mut expected: Vec<&str> = pattern.panels.iter().map(|p| p.name.as_str()).collect();
+    expected.sort_unstable();
+    assert_eq!(names, expected);
+
+    // Stitches: one seam line per stitch, as many vertices as the stitch has, on stitch vertices.
+    let stitches = r["stitches"].as_array().unwrap();
+    assert_eq!(stitches.len(), pattern.stitches.len());
+    for (s, seam) in mesh.stitches.iter().zip(stitches) {
+        let ids: Vec<usize> = seam.as_array().unwrap().iter().map(|x| x.as_u64().unwrap() as usize).collect();
+        assert_eq!(ids.len(), s.n);
+        assert!(ids.iter().all(|&v| v < mesh.n_stitch_vertices), "seams run along merged vertices");
+    }
+
+    // Deterministic, and coarser on request.
+    let bytes = || route(&request("POST", "/api/mesh", &input.to_string())).body;
+    assert_eq!(bytes(), bytes());
+    let mut coarse = input.clone();
+    coarse["resolution"] = json!(3.0);
+    let (status, c) = post("/api/mesh", coarse);
+    assert_eq!(status, 200);
+    assert!(c["vertices"].as_u64().unwrap() * 4 < n as u64, "{} vs {n}", c["vertices"]);
+}
+
+#[test]
+fn mesh_requests_are_checked_like_the_others() {
+    let (status, r) = post("/api/mesh", json!({}));
+    assert_eq!(status, 200);
+    assert_eq!(r["ok"], false);
+    assert!(r["error"].as_str().unwrap().contains("empty garment"), "{r}");
+    assert!(r.get("positions").is_none());
+
+    let cases = [
+        (json!({ "resolution": 0.1 }), "resolution: expected a number of cm from 1 to 10, got 0.1"),
+        (json!({ "resolution": "fine" }), "resolution: expected a number of cm from 1 to 10, got \"fine\""),
+        (json!({ "layout": "flat" }), "unknown key \"layout\" (expected design, body, name and resolution)"),
+        (json!({ "design": { "shirt.length": 9 } }), "design.shirt.length: 9 is outside the allowed range [0.5, 3.5]"),
+        (json!({ "body": "nobody" }), "no built-in body 'nobody'"),
+    ];
+    for (body, message) in cases {
+        let (status, r) = post("/api/mesh", body.clone());
+        assert_eq!(status, 400, "{body}: {r}");
+        assert!(r["error"].as_str().unwrap().contains(message), "{body}: {r}");
+    }
+    assert_eq!(call("GET", "/api/mesh", "").0, 405);
+    let listed = call("GET", "/api", "").1;
+    assert!(listed["endpoints"].as_array().unwrap().iter().any(|e| e == "POST /api/mesh"));
 }

@@ -1,5 +1,6 @@
 // GarmentCode configurator: controls generated from the design space served at
-// /api/schema, the pattern re-evaluated by POST /api/pattern as they move.
+// /api/schema, the pattern re-evaluated by POST /api/pattern as they move (and its
+// box mesh by POST /api/mesh while the 3D view is shown, drawn by view3d.js).
 // Plain JS, no dependencies: the page works offline from the binary alone.
 "use strict";
 
@@ -22,6 +23,10 @@ const state = {
   lastGood: false,       // a drawing is on screen
   view: null,            // current view box [x, y, w, h] (null: fit)
   fitBox: null,          // view box of the whole pattern
+  mode: "2d",            // view shown: "2d" (the drawing) or "3d" (the box mesh)
+  mesh3d: undefined,     // the 3D view (MeshView; null without WebGL; undefined until first shown)
+  meshSeq: 0,            // id of the latest mesh request
+  meshStale: true,       // the 3D view does not show the latest pattern
 };
 
 const $ = (id) => document.getElementById(id);
@@ -389,6 +394,8 @@ async function evaluate() {
     }
     showDrawing(res.svg);
     $("overlay").hidden = true;
+    state.meshStale = true;
+    if (state.mode === "3d") await loadMesh();
     const ms = Math.round(performance.now() - t0);
     const summary = `${res.panels.length} panels · ${res.stitches} stitches · ${ms} ms`;
     setStatus(res.warnings.length ? "warning" : "ok", res.warnings.length ? `${summary} · ${res.warnings.length} warning(s)` : summary);
@@ -529,9 +536,84 @@ function setupZoom() {
   host.addEventListener("pointercancel", end);
   host.addEventListener("pointerleave", () => { $("panel-tip").hidden = true; });
   host.addEventListener("dblclick", () => { state.view = null; applyView(); });
-  $("zoom-in").addEventListener("click", () => zoom(1 / 1.3));
-  $("zoom-out").addEventListener("click", () => zoom(1.3));
-  $("zoom-fit").addEventListener("click", () => { state.view = null; applyView(); });
+  const in3d = () => state.mode === "3d" && state.mesh3d;
+  $("zoom-in").addEventListener("click", () => (in3d() ? state.mesh3d.zoom(1 / 1.3) : zoom(1 / 1.3)));
+  $("zoom-out").addEventListener("click", () => (in3d() ? state.mesh3d.zoom(1.3) : zoom(1.3)));
+  $("zoom-fit").addEventListener("click", () => {
+    if (in3d()) state.mesh3d.fit();
+    else { state.view = null; applyView(); }
+  });
+}
+
+// ---------------------------------------------------------------------------
+// 3D view
+
+function selectView(mode) {
+  state.mode = mode;
+  for (const m of ["2d", "3d"]) $("show-" + m).setAttribute("aria-selected", String(m === mode));
+  $("drawing").hidden = mode !== "2d";
+  $("view3d").hidden = mode !== "3d";
+  $("layout").hidden = mode !== "2d";
+  $("panel-tip").hidden = true;
+  if (mode !== "3d") return;
+  if (state.mesh3d === undefined) {
+    try {
+      state.mesh3d = MeshView.create($("mesh3d"));
+    } catch (e) {
+      state.mesh3d = null;
+    }
+    $("mesh3d").dataset.webgl = state.mesh3d ? "yes" : "no";
+    if (!state.mesh3d) {
+      showMeshMessage("The 3D view needs WebGL, which this browser does not provide or has turned off. The 2D view works without it.");
+      return;
+    }
+    state.mesh3d.setSeams($("show-stitches").checked);
+  }
+  if (state.meshStale && state.lastGood) loadMesh();
+}
+
+function showMeshMessage(text) {
+  const p = $("mesh3d-message");
+  p.textContent = text || "";
+  p.hidden = !text;
+}
+
+// The box mesh of the current state; only the latest request's answer is shown.
+async function loadMesh() {
+  if (!state.mesh3d) return;
+  const seq = ++state.meshSeq;
+  const { layout, ...request } = requestBody();
+  let res;
+  try {
+    res = await api("POST", "/api/mesh", request);
+  } catch (e) {
+    if (seq === state.meshSeq) showMeshMessage("The 3D view cannot be updated: " + e.problems.join("; "));
+    return;
+  }
+  if (seq !== state.meshSeq) return;
+  state.meshStale = false;
+  if (!res.ok) {
+    showMeshMessage("No 3D view of this pattern: " + res.error);
+    return;
+  }
+  showMeshMessage("");
+  state.mesh3d.setMesh(res);
+  const legend = $("mesh3d-legend");
+  legend.textContent = "";
+  for (const { name, color } of state.mesh3d.legend) {
+    const li = document.createElement("li");
+    const swatch = document.createElement("span");
+    swatch.className = "swatch";
+    swatch.style.background = `rgb(${color.map((x) => Math.round(x * 255)).join(",")})`;
+    li.append(swatch, name);
+    legend.append(li);
+  }
+  $("mesh3d-info").textContent =
+    `Box mesh at ${res.resolution} cm: ${res.vertices} vertices, ${res.faces} triangles, stitched edges joined · drag to rotate, wheel to zoom, double-click to reset`;
+  const c = $("mesh3d");
+  c.dataset.vertices = String(res.vertices);
+  c.dataset.faces = String(res.faces);
+  c.dataset.version = String(Number(c.dataset.version) + 1);
 }
 
 // ---------------------------------------------------------------------------
@@ -667,7 +749,12 @@ async function main() {
   $("download-svg").addEventListener("click", () => downloadFile("pattern.svg", "image/svg+xml"));
   $("download-zip").addEventListener("click", downloadZip);
   $("filter").addEventListener("input", applyFilter);
-  $("show-stitches").addEventListener("change", (ev) => $("drawing").classList.toggle("hide-stitches", !ev.target.checked));
+  $("show-stitches").addEventListener("change", (ev) => {
+    $("drawing").classList.toggle("hide-stitches", !ev.target.checked);
+    if (state.mesh3d) state.mesh3d.setSeams(ev.target.checked);
+  });
+  $("show-2d").addEventListener("click", () => selectView("2d"));
+  $("show-3d").addEventListener("click", () => selectView("3d"));
   $("layout").addEventListener("change", (ev) => { state.layout = ev.target.value; state.view = null; schedule(); });
   $("tab-design").addEventListener("click", () => selectTab("design"));
   $("tab-body").addEventListener("click", () => selectTab("body"));
