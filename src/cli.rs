@@ -140,6 +140,47 @@ impl From<LayoutArg> for garmentcode::draw::Layout {
     }
 }
 
+/// PNG options of the drawings (`build`, `render`).
+#[derive(Args, Debug, Clone)]
+pub struct PngArgs {
+    /// PNG resolution in dots per inch (default: the reference's 3 px per cm, about 7.6 dpi).
+    #[arg(long, value_name = "DPI", value_parser = positive_dpi)]
+    pub dpi: Option<f64>,
+    /// PNG background (default: transparent, as the reference's PNG).
+    #[arg(long, value_enum, default_value_t = BackgroundArg::None)]
+    pub background: BackgroundArg,
+}
+
+/// PNG background.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BackgroundArg {
+    /// Transparent outside the panels.
+    None,
+    /// White.
+    White,
+}
+
+impl PngArgs {
+    /// The drawing options for `layout` with these PNG settings.
+    pub fn draw_options(&self, layout: garmentcode::draw::Layout) -> garmentcode::draw::DrawOptions {
+        let mut o = garmentcode::draw::DrawOptions { layout, ..Default::default() };
+        if let Some(dpi) = self.dpi {
+            o.px_per_cm = dpi / 2.54;
+        }
+        if self.background == BackgroundArg::White {
+            o.background = Some([255, 255, 255]);
+        }
+        o
+    }
+}
+
+fn positive_dpi(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() && x > 0.0 && x <= 1200.0 => Ok(x),
+        _ => Err(format!("expects a resolution in dots per inch, above 0 and at most 1200, got '{s}'")),
+    }
+}
+
 /// `garmentcode build`.
 #[derive(Args, Debug)]
 pub struct BuildArgs {
@@ -172,6 +213,9 @@ pub struct BuildArgs {
     /// Drawing layout.
     #[arg(short, long, value_enum, default_value_t = LayoutArg::Placed)]
     pub layout: LayoutArg,
+    /// PNG resolution and background.
+    #[command(flatten)]
+    pub png: PngArgs,
     /// Replace an output folder that holds files garmentcode did not write.
     #[arg(short, long)]
     pub force: bool,
@@ -249,6 +293,9 @@ pub struct RenderArgs {
     /// Drawing layout.
     #[arg(short, long, value_enum, default_value_t = LayoutArg::Placed)]
     pub layout: LayoutArg,
+    /// PNG resolution and background.
+    #[command(flatten)]
+    pub png: PngArgs,
     /// Draw a pattern with structural errors anyway, and replace an output folder
     /// that holds files garmentcode did not write.
     #[arg(short, long)]

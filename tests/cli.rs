@@ -528,3 +528,27 @@ fn build_formats_print_writes_the_same_files() {
     let dxf = std::fs::read_to_string(dir.join("b/pattern.dxf")).unwrap();
     assert!(dxf.contains("AC1009") && dxf.contains("Size: mean_all"));
 }
+
+/// Width, height and colour type from a PNG's IHDR chunk.
+fn png_header(png: &[u8]) -> (u32, u32, u8) {
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let be = |i: usize| u32::from_be_bytes([png[i], png[i + 1], png[i + 2], png[i + 3]]);
+    (be(16), be(20), png[25])
+}
+
+#[test]
+fn png_resolution_and_background_are_chosen() {
+    let dir = scratch("png_dpi");
+    assert_eq!(code(&run(&["build", "--out", "default"], &dir)), 0);
+    let o = run(&["build", "--out", "fine", "--dpi", "76.2", "--background", "white"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let (w0, h0, _) = png_header(&std::fs::read(dir.join("default/pattern.png")).unwrap());
+    let (w1, h1, _) = png_header(&std::fs::read(dir.join("fine/pattern.png")).unwrap());
+    // 76.2 dpi is 30 px per cm: ten times the default 3.
+    assert!((w1 as f64 / w0 as f64 - 10.0).abs() < 0.1 && (h1 as f64 / h0 as f64 - 10.0).abs() < 0.1, "{w0}x{h0} vs {w1}x{h1}");
+    // The same drawing otherwise: the SVG does not change.
+    assert_eq!(std::fs::read(dir.join("default/pattern.svg")).unwrap(), std::fs::read(dir.join("fine/pattern.svg")).unwrap());
+    let o = run(&["render", "default/specification.json", "--out", "r", "--dpi", "0"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("dots per inch"), "{}", stderr(&o));
+}

@@ -27,7 +27,7 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
     let mut set = OutputSet::default();
     set.add("specification.json", built.pattern.to_json().map_err(|e| CliError::Input(e.to_string()))?);
     let wants = |f: BuildFormat| args.formats.contains(&f);
-    let opts = garmentcode::draw::DrawOptions { layout: args.layout.into(), ..Default::default() };
+    let opts = args.png.draw_options(args.layout.into());
     if wants(BuildFormat::Svg) {
         set.add("pattern.svg", garmentcode::draw::to_svg(&built.pattern, &opts).map_err(|e| CliError::Input(e.to_string()))?);
     }
