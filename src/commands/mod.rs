@@ -40,7 +40,12 @@ pub fn add_drawings(set: &mut OutputSet, pattern: &Pattern, png: bool, layout: g
 }
 
 /// Add `pattern.svg` (and `pattern.png`) drawn with `opts`.
-pub fn add_drawings_with(set: &mut OutputSet, pattern: &Pattern, png: bool, opts: &garmentcode::draw::DrawOptions) -> garmentcode::Result<()> {
+pub fn add_drawings_with(
+    set: &mut OutputSet,
+    pattern: &Pattern,
+    png: bool,
+    opts: &garmentcode::draw::DrawOptions,
+) -> garmentcode::Result<()> {
     set.add("pattern.svg", garmentcode::draw::to_svg(pattern, opts)?);
     if png {
         set.add("pattern.png", garmentcode::draw::to_png(pattern, opts)?);

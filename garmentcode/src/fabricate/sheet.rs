@@ -272,7 +272,8 @@ pub fn tile_label(row: usize, col: usize) -> String {
 
 /// The grid of pages covering a sheet of `size` on pages of `page` (cm): each page
 /// prints its area inside a [`PAGE_MARGIN`], neighbours share [`OVERLAP`]; pages
-/// with nothing drawn on them are left out. Returns the rows, columns and kept tiles.
+/// with nothing drawn in their own cell (the page less its overlap with the next
+/// ones) are left out. Returns the rows, columns and kept tiles.
 pub fn tiles(sheet: &Sheet, page: Vec2) -> (usize, usize, Vec<Tile>) {
     let area = page - Vec2::splat(2.0 * PAGE_MARGIN);
     let step = area - Vec2::splat(OVERLAP);
@@ -282,9 +283,11 @@ pub fn tiles(sheet: &Sheet, page: Vec2) -> (usize, usize, Vec<Tile>) {
     for row in 0..rows {
         for col in 0..cols {
             let min = Vec2::new(col as f64 * step.x, row as f64 * step.y);
-            let r = Rect { min, max: min + area };
-            if sheet.prims.iter().any(|p| touches(p, &r)) {
-                out.push(Tile { row, col, area: r });
+            // A page is needed when something is drawn in its own cell: what lies
+            // in the overlap with the next page is printed on that page too.
+            let cell = Rect { min, max: min + step };
+            if sheet.prims.iter().any(|p| touches(p, &cell)) {
+                out.push(Tile { row, col, area: Rect { min, max: min + area } });
             }
         }
     }
