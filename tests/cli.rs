@@ -464,7 +464,7 @@ fn build_formats_choose_drawings_and_the_mesh() {
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .filter(|n| n.starts_with("t-shirt_"))
         .collect();
-    assert_eq!(mesh_files.len(), 7, "{mesh_files:?}");
+    assert_eq!(mesh_files.len(), garmentcode::mesh::write::FILE_SUFFIXES.len(), "{mesh_files:?}");
     let o = run(&["mesh", "a/specification.json", "--name", "t-shirt", "--out", "m"], &dir);
     assert_eq!(code(&o), 0, "{}", stderr(&o));
     for f in &mesh_files {

@@ -353,7 +353,15 @@ fn written_files_read_back() {
     let mesh = BoxMesh::new(&load(&case.join(format!("{name}_specification.json")), &name), DEFAULT_RESOLUTION).expect("mesh");
     let dir = std::env::temp_dir().join(format!("garmentcode-mesh-{}", std::process::id()));
     let written = mesh.write_files(&dir).expect("written");
-    assert_eq!(written.len(), 7);
+    assert_eq!(written.len(), garmentcode::mesh::write::FILE_SUFFIXES.len());
+    // The texture the material names: a PNG of the declared size.
+    let material = std::fs::read_to_string(dir.join(format!("{name}_material.mtl"))).unwrap();
+    let texture = material.lines().find_map(|l| l.strip_prefix("map_Kd ")).expect("map_Kd");
+    let png = std::fs::read(dir.join(texture)).expect("the texture the material names is written");
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let side = garmentcode::mesh::write::TEXTURE_SIZE as u32;
+    let (width, height) = (u32::from_be_bytes(png[16..20].try_into().unwrap()), u32::from_be_bytes(png[20..24].try_into().unwrap()));
+    assert_eq!((width, height), (side, side));
     let (vertices, faces) = read_obj(&std::fs::read_to_string(dir.join(format!("{name}_boxmesh.obj"))).unwrap()).expect("our OBJ");
     assert_eq!(vertices, mesh.vertices, "positions round-trip exactly");
     assert_eq!(faces, mesh.faces.iter().map(|f| f.vertices).collect::<Vec<_>>());
@@ -394,6 +402,40 @@ fn small_files_snapshot() {
         "box_mesh_case_001",
         format!("{}\n--- stitch block\n{seg}--- panels\n{panels}--- vertex labels\n{}", mesh.material(), mesh.vertex_labels_yaml())
     );
+}
+
+/// A ruffle of a levels skirt (seen in a dataset run): a half ring 1 to 3 cm wide and
+/// 16 m long, whose bounding box is 180 times its area. It meshes, with vertices in
+/// proportion to its area, and with the mesh's properties.
+#[test]
+fn a_thin_ring_meshes_in_proportion_to_its_area() {
+    let spec = r#"{"pattern": {"panels": {"ruffle": {"translation": [-514.7533775580981, 297.6170280779458, 17.5], "rotation": [0.0, 0.0, 0.0], "vertices": [[-0.7533775580981228, 0.0], [-3.784064527139094, 0.0], [1031.784064527139, 0.0], [1028.7533775580982, 0.0]], "edges": [{"endpoints": [0, 1]}, {"endpoints": [1, 2], "curvature": {"type": "circle", "params": [517.7877953290746, 0, 1]}}, {"endpoints": [2, 3]}, {"endpoints": [3, 0], "curvature": {"type": "circle", "params": [514.7533775580986, 0, 0]}}], "label": "leg"}}, "stitches": [], "panel_order": ["ruffle"]}, "properties": {"curvature_coords": "relative", "normalize_panel_translation": false, "normalized_edge_loops": true, "units_in_meter": 100}}"#;
+    let pattern = Pattern::from_json(spec).expect("pattern");
+    let mesh = BoxMesh::new(&pattern, DEFAULT_RESOLUTION).expect("a thin ring meshes");
+    let area = area_of(&mesh, 0);
+    // The area inside the sampled outline (the two arcs are not concentric: the ring
+    // narrows from 3 cm at its ends to 1 cm at its middle).
+    let panel = &mesh.panels[0];
+    let outline: Vec<Vec2> = panel.edges.iter().flat_map(|e| e.local[..e.local.len() - 1].iter().map(|&i| panel.points[i])).collect();
+    let expected = (0..outline.len()).map(|i| outline[i].perp_dot(outline[(i + 1) % outline.len()])).sum::<f64>().abs() / 2.0;
+    assert!((area - expected).abs() < 1e-6 * expected, "area {area} vs {expected}");
+    assert!(mesh.vertices.len() < (3.0 * area) as usize, "{} vertices for {area} cm²", mesh.vertices.len());
+    assert_eq!(properties(&mesh), Vec::<String>::new());
+}
+
+/// A skirt whose side seam is stitched in crossed pieces (sample 2337 of seed 7: the
+/// front's lowest piece is stitched to the back's highest), so that merging the stitches
+/// collapses a short edge onto one vertex. It meshes: the collapsed faces are dropped
+/// and every other property holds.
+#[test]
+fn crossed_seam_pieces_mesh() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/mesh-extra/crossed_seams_specification.json");
+    let pattern = load(&path, "crossed_seams");
+    let mesh = BoxMesh::new(&pattern, DEFAULT_RESOLUTION).expect("crossed seams mesh");
+    assert_eq!(properties(&mesh), Vec::<String>::new());
+    for f in &mesh.faces {
+        assert!(f.vertices[0] != f.vertices[1] && f.vertices[1] != f.vertices[2] && f.vertices[0] != f.vertices[2], "a collapsed face");
+    }
 }
 
 #[test]

@@ -65,7 +65,7 @@ const MAX_EDGE_VERTICES: usize = 1_000_000;
 
 /// Most vertices a whole mesh may have (about 400 MB of triangulation at most): a
 /// pattern whose panels would need more at the resolution asked is refused.
-const MAX_MESH_VERTICES: f64 = 4_000_000.0;
+const MAX_MESH_VERTICES: usize = 4_000_000;
 
 /// What can make a pattern impossible to mesh.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -125,16 +125,6 @@ pub enum MeshError {
         panel: String,
         /// What is wrong.
         reason: String,
-    },
-    /// Stitching collapsed both ends of a stitched edge into one vertex.
-    #[error("stitch {stitch}: panel '{panel}' edge {edge} collapses to a single vertex when stitched")]
-    StitchCollapsed {
-        /// Stitch index.
-        stitch: usize,
-        /// Panel name.
-        panel: String,
-        /// Edge index.
-        edge: usize,
     },
 }
 
@@ -338,7 +328,7 @@ impl BoxMesh {
         // Panels: local vertices, orientation, triangulation.
         let mut panels = Vec::with_capacity(specs.len());
         let mut texture_offset = 0;
-        let mut estimate = 0.0;
+        let mut vertices = 0;
         for (pi, p) in specs.iter().enumerate() {
             let mut points: Vec<Vec2> = Vec::new();
             let mut seen: HashMap<[u64; 2], usize> = HashMap::default();
@@ -373,11 +363,10 @@ impl BoxMesh {
                 }
             }
             let counter_clockwise = outline_orientation(p, &samples)?;
-            // Bounded memory: about one interior vertex per 0.5·res² of the panel's bounding box.
-            let (lo, hi) =
-                points.iter().fold((Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY)), |(lo, hi), q| (lo.min(*q), hi.max(*q)));
-            estimate += points.len() as f64 + 2.0 * (hi - lo).x * (hi - lo).y / (resolution * resolution);
-            if estimate.is_nan() || estimate > MAX_MESH_VERTICES {
+            // Bounded memory: the outline and its row of points count now, the interior
+            // as it is laid out (at most what is left).
+            vertices += 2 * points.len();
+            if vertices > MAX_MESH_VERTICES {
                 return Err(MeshError::DegeneratePanel {
                     panel: p.name.clone(),
                     reason: format!("too large to mesh at {resolution} cm (over {MAX_MESH_VERTICES} vertices)"),
@@ -390,8 +379,9 @@ impl BoxMesh {
             // triangles, counter-clockwise in the mirror, come out wound like the outline.
             let mirror = |q: &Vec2| if counter_clockwise { *q } else { Vec2::new(-q.x, q.y) };
             let input: Vec<Vec2> = points.iter().map(mirror).collect();
-            let mut tri = triangulate::triangulate(&input, &segments, resolution)
+            let mut tri = triangulate::triangulate(&input, &segments, resolution, MAX_MESH_VERTICES - vertices)
                 .map_err(|reason| MeshError::DegeneratePanel { panel: p.name.clone(), reason })?;
+            vertices += tri.points.len() - n_boundary;
             if tri.faces.is_empty() {
                 return Err(MeshError::DegeneratePanel { panel: p.name.clone(), reason: "the outline encloses no area".into() });
             }
@@ -472,14 +462,6 @@ impl BoxMesh {
                         loc_glob.insert(kb, globals.len());
                         globals.push(GlobalStitch { pos: (pa + pb) / 2.0, labels: vec![k], members: vec![ka, kb] });
                     }
-                }
-            }
-        }
-        for (k, s) in stitches.iter().enumerate() {
-            for (p, e) in s.sides {
-                let r = &panels[p].edges[e].local;
-                if loc_glob.get(&(p, r[0])) == loc_glob.get(&(p, r[r.len() - 1])) {
-                    return Err(MeshError::StitchCollapsed { stitch: k, panel: panels[p].name.clone(), edge: e });
                 }
             }
         }

@@ -54,9 +54,10 @@ pub(crate) struct PanelTriangulation {
 }
 
 /// Triangulates the region bounded by `segments` between `boundary` points.
-pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) -> Result<PanelTriangulation, String> {
+/// At most `max_interior` lattice points are laid out (an error past that).
+pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, max_interior: usize) -> Result<PanelTriangulation, String> {
     let max_len = SIZE_BOUND * res;
-    let (row, lattice) = interior_points(boundary, segments, res);
+    let (row, lattice) = interior_points(boundary, segments, res, max_interior)?;
     // The lattice's own triangles are kept as they are; the Delaunay triangulation only
     // fills the strip between the outline and them (the outline, the row, the lattice
     // points on the strip's inner border or in no lattice triangle), with the border's
@@ -184,7 +185,7 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) 
 /// The interior points: a row along the outline, one point over the middle of each
 /// outline segment at [`ROW_HEIGHT`]`·res` (so the triangles on the outline are about
 /// isosceles, as a quality mesher makes them), and the lattice inside that row.
-fn interior_points(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) -> (Vec<Vec2>, Lattice) {
+fn interior_points(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, max_interior: usize) -> Result<(Vec<Vec2>, Lattice), String> {
     let (mut lo, mut hi) = (Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY));
     for p in boundary {
         lo = lo.min(*p);
@@ -195,6 +196,10 @@ fn interior_points(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) -> (Vec
     let near = SegmentGrid::new(boundary, segments, lo, hi, clearance);
     let mut grid = PointGrid::new(lo, hi, ROW_SPACING * res);
     let mut row = Vec::new();
+    // Inside is on the left of a counter-clockwise outline (positive area), else on the
+    // right (the panel's normal, decided by its bounding-box corners, can disagree).
+    let area2: f64 = segments.iter().map(|&[a, b]| boundary[a].perp_dot(boundary[b])).sum();
+    let inward = if area2 < 0.0 { -1.0 } else { 1.0 };
     for &[a, b] in segments {
         let (pa, pb) = (boundary[a], boundary[b]);
         let d = pb - pa;
@@ -202,8 +207,7 @@ fn interior_points(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) -> (Vec
         if len.is_nan() || len <= 0.0 {
             continue;
         }
-        // The outline runs counter-clockwise: inside is on the left.
-        let q = (pa + pb) / 2.0 + Vec2::new(-d.y, d.x) / len * t + nudge(a as u64, b as u64, res);
+        let q = (pa + pb) / 2.0 + inward * Vec2::new(-d.y, d.x) / len * t + nudge(a as u64, b as u64, res);
         if !near.within(q, 0.8 * t) && !grid.within(q) {
             grid.insert(q);
             row.push(q);
@@ -212,52 +216,69 @@ fn interior_points(boundary: &[Vec2], segments: &[[usize; 2]], res: f64) -> (Vec
     // A lattice point is at least `BOUNDARY_CLEARANCE·res` farther from the outline than
     // any row point (a row point is at most `t` from it), so farther than `ROW_SPACING·res`
     // from every row point.
-    (row, Lattice::new(boundary, segments, &near, LATTICE_SPACING * res, clearance, lo, hi))
+    Ok((row, Lattice::new(boundary, segments, &near, LATTICE_SPACING * res, clearance, [lo, hi], max_interior)?))
 }
 
 /// The points of an equilateral lattice of spacing `h` inside the outline (even–odd rule)
 /// and at least `clearance` away from it. Rows are `h·√3/2` apart, odd rows shifted by
-/// `h/2`; a point's place is its row and its column in half spacings.
+/// `h/2`; a point's place is its row and its column in half spacings. Memory and time
+/// go with the number of points and outline segments, not with the bounding box (a
+/// ruffle can be a 3 cm ring of 5 m radius).
 struct Lattice {
+    /// Row by row, columns increasing within a row.
     points: Vec<Vec2>,
-    /// Index + 1 of the point at `row · width + column`, 0 for none.
-    slot: Vec<u32>,
-    rows: usize,
-    width: usize,
+    /// Each point's column.
+    column: Vec<u32>,
+    /// Row `r`'s points are `row_start[r]..row_start[r + 1]`.
+    row_start: Vec<usize>,
 }
 
 impl Lattice {
-    fn new(boundary: &[Vec2], segments: &[[usize; 2]], near: &SegmentGrid, h: f64, clearance: f64, lo: Vec2, hi: Vec2) -> Lattice {
+    fn new(
+        boundary: &[Vec2],
+        segments: &[[usize; 2]],
+        near: &SegmentGrid,
+        h: f64,
+        clearance: f64,
+        [lo, hi]: [Vec2; 2],
+        max_points: usize,
+    ) -> Result<Lattice, String> {
         let size = hi - lo;
         let dy = h * 3f64.sqrt() / 2.0;
-        let mut lattice = Lattice { points: Vec::new(), slot: Vec::new(), rows: 0, width: 0 };
+        let mut lattice = Lattice { points: Vec::new(), column: Vec::new(), row_start: vec![0] };
         if !(size.x > 2.0 * clearance && size.y > 2.0 * clearance) {
-            return lattice;
+            return Ok(lattice);
         }
         let rows = ((size.y - 2.0 * clearance) / dy).floor() as usize + 1;
-        // Centred in the bounding box; columns k from `k_min` (spares on each side).
+        // Centred in the bounding box; columns counted from `k_min`.
         let y0 = lo.y + (size.y - (rows - 1) as f64 * dy) / 2.0;
         let cx = (lo.x + hi.x) / 2.0;
         let k_min = ((lo.x - cx) / h).floor() as i64 - 2;
-        let k_max = ((hi.x - cx) / h).ceil() as i64 + 2;
-        let width = 2 * (k_max - k_min + 1) as usize;
-        lattice.rows = rows;
-        lattice.width = width;
-        lattice.slot = vec![0; rows * width];
-        let mut crossings: Vec<f64> = Vec::new();
-        for r in 0..rows {
-            let y = y0 + r as f64 * dy;
-            crossings.clear();
-            for &[a, b] in segments {
-                let (pa, pb) = (boundary[a], boundary[b]);
+        let row_y = |r: usize| y0 + r as f64 * dy;
+        // Where each row crosses the outline (a segment crosses the rows within its
+        // height: min(y) <= y < max(y)), sorted by row, then x.
+        let mut crossings: Vec<(usize, f64)> = Vec::new();
+        for &[a, b] in segments {
+            let (pa, pb) = (boundary[a], boundary[b]);
+            let (y_lo, y_hi) = (pa.y.min(pb.y), pa.y.max(pb.y));
+            let first = (((y_lo - y0) / dy).floor().max(0.0) as usize).min(rows);
+            for r in first..rows {
+                let y = row_y(r);
+                if y >= y_hi {
+                    break;
+                }
                 if (pa.y <= y) != (pb.y <= y) {
-                    crossings.push(pa.x + (y - pa.y) * (pb.x - pa.x) / (pb.y - pa.y));
+                    crossings.push((r, pa.x + (y - pa.y) * (pb.x - pa.x) / (pb.y - pa.y)));
                 }
             }
-            crossings.sort_by(f64::total_cmp);
+        }
+        crossings.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+        let mut at = 0;
+        for r in 0..rows {
+            let end = at + crossings[at..].iter().take_while(|c| c.0 == r).count();
             let shift = if r % 2 == 0 { 0.0 } else { h / 2.0 };
-            for span in crossings.chunks_exact(2) {
-                let (x0, x1) = (span[0] + clearance, span[1] - clearance);
+            for span in crossings[at..end].chunks_exact(2) {
+                let (x0, x1) = (span[0].1 + clearance, span[1].1 - clearance);
                 if x1 < x0 {
                     continue;
                 }
@@ -265,24 +286,27 @@ impl Lattice {
                 let k0 = ((x0 - cx - shift) / h).ceil() as i64;
                 let k1 = ((x1 - cx - shift) / h).floor() as i64;
                 for k in k0..=k1 {
-                    let p = Vec2::new(cx + shift + k as f64 * h, y) + nudge(r as u64, k as u64, h);
+                    let p = Vec2::new(cx + shift + k as f64 * h, row_y(r)) + nudge(r as u64, k as u64, h);
                     if !near.within(p, clearance) {
-                        let column = 2 * (k - k_min) as usize + r % 2;
-                        lattice.slot[r * width + column] = lattice.points.len() as u32 + 1;
+                        lattice.column.push((2 * (k - k_min) + (r % 2) as i64) as u32);
                         lattice.points.push(p);
+                    }
+                    if lattice.points.len() > max_points {
+                        return Err(format!("too large to mesh at {} cm (over {max_points} more vertices)", h / LATTICE_SPACING));
                     }
                 }
             }
+            lattice.row_start.push(lattice.points.len());
+            at = end;
         }
-        lattice
+        Ok(lattice)
     }
 
     /// The point at `row`, `column`, if any.
     fn at(&self, row: usize, column: usize) -> Option<usize> {
-        if row >= self.rows || column >= self.width {
-            return None;
-        }
-        self.slot[row * self.width + column].checked_sub(1).map(|i| i as usize)
+        let range = self.row_start.get(row..row + 2)?;
+        let columns = &self.column[range[0]..range[1]];
+        columns.binary_search(&u32::try_from(column).ok()?).ok().map(|i| range[0] + i)
     }
 
     /// The lattice's triangles (counter-clockwise) whose three corners are points, and
@@ -301,8 +325,10 @@ impl Lattice {
                 }
             }
         };
-        for r in 0..self.rows.saturating_sub(1) {
-            for c in 0..self.width {
+        let rows = self.row_start.len() - 1;
+        for r in 0..rows.saturating_sub(1) {
+            for i in self.row_start[r]..self.row_start[r + 1] {
+                let c = self.column[i] as usize;
                 // The triangles across each edge, in the edges' order.
                 if let Some(f) = upper(r, c) {
                     push(f, [r.checked_sub(1).and_then(|q| lower(q, c + 1)), lower(r, c + 2), lower(r, c)]);
@@ -510,7 +536,7 @@ mod tests {
     #[test]
     fn square_is_covered_with_short_edges() {
         let (pts, segs) = square(10, 10.0);
-        let t = triangulate(&pts, &segs, 1.0).unwrap();
+        let t = triangulate(&pts, &segs, 1.0, 1000).unwrap();
         let area: f64 = t.faces.iter().map(|f| (t.points[f[1]] - t.points[f[0]]).perp_dot(t.points[f[2]] - t.points[f[0]]) / 2.0).sum();
         assert!((area - 100.0).abs() < 1e-9, "{area}");
         for f in &t.faces {

@@ -12,6 +12,9 @@ use crate::{Vec2, Vec3};
 /// Padding between texture islands (cm), as the reference lays them out.
 const UV_PADDING: f64 = 3.0;
 
+/// Width and height of `<name>_texture_fabric.png`, pixels.
+pub const TEXTURE_SIZE: usize = 512;
+
 impl BoxMesh {
     /// File name prefix: the pattern name without a `_specification` suffix.
     pub fn file_prefix(&self) -> &str {
@@ -21,7 +24,8 @@ impl BoxMesh {
     /// `<name>_boxmesh.obj`: `mtllib`, `v` (cm, Python float repr), `vt` (one per panel-local
     /// vertex), `s 1`, `usemtl panels_texture`, `f v/vt v/vt v/vt`.
     pub fn obj(&self) -> String {
-        let mut out = String::with_capacity(64 * (self.vertices.len() + self.faces.len()));
+        let n_uv: usize = self.panels.iter().map(|p| p.points.len()).sum();
+        let mut out = String::with_capacity(64 * self.vertices.len() + 44 * n_uv + 48 * self.faces.len() + 100);
         let _ = writeln!(out, "mtllib {}_material.mtl", self.file_prefix());
         for v in &self.vertices {
             out.push_str("v ");
@@ -36,16 +40,14 @@ impl BoxMesh {
         }
         out.push_str("s 1\nusemtl panels_texture\n");
         for f in &self.faces {
-            let _ = writeln!(
-                out,
-                "f {}/{} {}/{} {}/{}",
-                f.vertices[0] + 1,
-                f.uvs[0] + 1,
-                f.vertices[1] + 1,
-                f.uvs[1] + 1,
-                f.vertices[2] + 1,
-                f.uvs[2] + 1
-            );
+            out.push('f');
+            for k in 0..3 {
+                out.push(' ');
+                push_int(&mut out, f.vertices[k] + 1);
+                out.push('/');
+                push_int(&mut out, f.uvs[k] + 1);
+            }
+            out.push('\n');
         }
         out
     }
@@ -65,6 +67,49 @@ impl BoxMesh {
         uvs.iter().map(|q| *q / scale).collect()
     }
 
+    /// `<name>_texture_fabric.png`, the texture the material names (the reference's renderer
+    /// needs the file): the texture islands, each panel's faces at their texture coordinates,
+    /// in a fabric colour on white, [`TEXTURE_SIZE`] pixels square. The reference draws
+    /// its islands at 1,500 dpi (about 10 MB a garment); this one is a few kilobytes.
+    pub fn texture_png(&self) -> Vec<u8> {
+        const FABRIC: [u8; 3] = [0xd8, 0xc8, 0xb0];
+        let n = TEXTURE_SIZE;
+        let mut rgb = vec![0xffu8; 3 * n * n];
+        let uvs = self.texture_coordinates();
+        let scale = n as f64;
+        for f in &self.faces {
+            // Image rows run down, texture v up.
+            let [a, b, c] = f.uvs.map(|t| Vec2::new(uvs[t].x * scale, (1.0 - uvs[t].y) * scale));
+            let area = (b - a).perp_dot(c - a);
+            if area == 0.0 || !area.is_finite() {
+                continue;
+            }
+            let (lo, hi) = (a.min(b).min(c), a.max(b).max(c));
+            let (x0, x1) = ((lo.x.floor().max(0.0)) as usize, (hi.x.ceil().min(scale)) as usize);
+            let (y0, y1) = ((lo.y.floor().max(0.0)) as usize, (hi.y.ceil().min(scale)) as usize);
+            for y in y0..y1 {
+                for x in x0..x1 {
+                    // Pixels whose centre is inside (or on) the triangle.
+                    let p = Vec2::new(x as f64 + 0.5, y as f64 + 0.5);
+                    let w = [(b - a).perp_dot(p - a), (c - b).perp_dot(p - b), (a - c).perp_dot(p - c)];
+                    if w.iter().all(|w| w * area >= 0.0) {
+                        rgb[3 * (y * n + x)..3 * (y * n + x) + 3].copy_from_slice(&FABRIC);
+                    }
+                }
+            }
+        }
+        let mut out = Vec::new();
+        let mut enc = png::Encoder::new(&mut out, n as u32, n as u32);
+        enc.set_color(png::ColorType::Rgb);
+        enc.set_depth(png::BitDepth::Eight);
+        enc.set_compression(png::Compression::Fast);
+        // Writing into memory cannot fail for an image of the size declared.
+        let mut writer = enc.write_header().expect("PNG header in memory");
+        writer.write_image_data(&rgb).expect("PNG data in memory");
+        writer.finish().expect("PNG end in memory");
+        out
+    }
+
     /// `<name>_material.mtl`.
     pub fn material(&self) -> String {
         format!(
@@ -76,9 +121,17 @@ impl BoxMesh {
 
     /// `<name>_sim_segmentation.txt`: one line per vertex.
     pub fn segmentation(&self) -> String {
-        let mut out = String::new();
-        for v in 0..self.vertices.len() {
-            out.push_str(&self.segmentation_label(v));
+        let mut out = String::with_capacity(16 * self.vertices.len());
+        for label in &self.labels {
+            match label {
+                VertexLabel::Stitch(ks) => {
+                    for (i, k) in ks.iter().enumerate() {
+                        out.push_str(if i == 0 { "stitch_" } else { ",stitch_" });
+                        push_int(&mut out, *k);
+                    }
+                }
+                VertexLabel::Panel(p) => out.push_str(&self.panels[*p].name),
+            }
             out.push('\n');
         }
         out
@@ -119,7 +172,9 @@ impl BoxMesh {
                 out.push_str(" []\n");
             }
             for id in ids {
-                let _ = writeln!(out, "- {id}");
+                out.push_str("- ");
+                push_int(&mut out, *id);
+                out.push('\n');
             }
         }
         out
@@ -127,13 +182,18 @@ impl BoxMesh {
 
     /// `<name>_sim_mesh.obj`: the welded mesh in metres, plain `v` and `f` lines.
     pub fn welded_obj_metres(&self) -> String {
-        let mut out = String::with_capacity(48 * (self.vertices.len() + self.faces.len()));
+        let mut out = String::with_capacity(64 * self.vertices.len() + 24 * self.faces.len());
         for v in &self.vertices {
             out.push_str("v ");
             push_xyz(&mut out, *v / 100.0);
         }
         for f in &self.faces {
-            let _ = writeln!(out, "f {} {} {}", f.vertices[0] + 1, f.vertices[1] + 1, f.vertices[2] + 1);
+            out.push('f');
+            for v in f.vertices {
+                out.push(' ');
+                push_int(&mut out, v + 1);
+            }
+            out.push('\n');
         }
         out
     }
@@ -142,7 +202,8 @@ impl BoxMesh {
     /// is the panel index (panels named in `comment panel <i> <name>` lines) or -1 for a
     /// stitch vertex and `stitch` the first stitch of a stitch vertex (-1 otherwise).
     pub fn ply(&self) -> String {
-        let mut out = String::from("ply\nformat ascii 1.0\ncomment garmentcode box mesh, cm\n");
+        let mut out = String::with_capacity(64 * self.vertices.len() + 24 * self.faces.len() + 1000);
+        out.push_str("ply\nformat ascii 1.0\ncomment garmentcode box mesh, cm\n");
         for (i, p) in self.panels.iter().enumerate() {
             let _ = writeln!(out, "comment panel {i} {}", p.name);
         }
@@ -158,16 +219,27 @@ impl BoxMesh {
                 VertexLabel::Stitch(ks) => (-1, ks.first().map_or(-1, |&k| k as i64)),
                 VertexLabel::Panel(p) => (*p as i64, -1),
             };
-            let _ = writeln!(out, "{} {} {} {segment} {stitch}", v.x, v.y, v.z);
+            push_xyz_line(&mut out, *v);
+            out.push(' ');
+            out.push_str(itoa::Buffer::new().format(segment));
+            out.push(' ');
+            out.push_str(itoa::Buffer::new().format(stitch));
+            out.push('\n');
         }
         for f in &self.faces {
-            let _ = writeln!(out, "3 {} {} {}", f.vertices[0], f.vertices[1], f.vertices[2]);
+            out.push('3');
+            for v in f.vertices {
+                out.push(' ');
+                push_int(&mut out, v);
+            }
+            out.push('\n');
         }
         out
     }
 
     /// The files, named `<name><suffix>` (suffixes in [`FILE_SUFFIXES`]): the reference's
-    /// (OBJ, material, segmentation, rest lengths, vertex labels), the welded metre OBJ and the PLY.
+    /// (OBJ, material, segmentation, rest lengths, vertex labels), the welded metre OBJ, the
+    /// PLY and the texture the material names.
     pub fn files(&self) -> Vec<(String, Vec<u8>)> {
         let name = self.file_prefix();
         let bytes = [
@@ -178,6 +250,7 @@ impl BoxMesh {
             self.vertex_labels_yaml().into_bytes(),
             self.welded_obj_metres().into_bytes(),
             self.ply().into_bytes(),
+            self.texture_png(),
         ];
         FILE_SUFFIXES.iter().zip(bytes).map(|(suffix, b)| (format!("{name}{suffix}"), b)).collect()
     }
@@ -196,15 +269,32 @@ impl BoxMesh {
 }
 
 /// Suffixes of the files [`BoxMesh::files`] writes, after the pattern's name.
-pub const FILE_SUFFIXES: [&str; 7] =
-    ["_boxmesh.obj", "_material.mtl", "_sim_segmentation.txt", "_orig_lens.pickle", "_vertex_labels.yaml", "_sim_mesh.obj", "_boxmesh.ply"];
+pub const FILE_SUFFIXES: [&str; 8] = [
+    "_boxmesh.obj",
+    "_material.mtl",
+    "_sim_segmentation.txt",
+    "_orig_lens.pickle",
+    "_vertex_labels.yaml",
+    "_sim_mesh.obj",
+    "_boxmesh.ply",
+    "_texture_fabric.png",
+];
 
-fn push_xyz(out: &mut String, v: Vec3) {
+fn push_int(out: &mut String, i: usize) {
+    out.push_str(itoa::Buffer::new().format(i));
+}
+
+/// `x y z` in Python's float repr (shortest round trip), without a line end.
+fn push_xyz_line(out: &mut String, v: Vec3) {
     write_python_float(out, v.x);
     out.push(' ');
     write_python_float(out, v.y);
     out.push(' ');
     write_python_float(out, v.z);
+}
+
+fn push_xyz(out: &mut String, v: Vec3) {
+    push_xyz_line(out, v);
     out.push('\n');
 }
 
