@@ -27,7 +27,7 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
     let mut set = OutputSet::default();
     set.add("specification.json", built.pattern.to_json().map_err(|e| CliError::Input(e.to_string()))?);
     let wants = |f: BuildFormat| args.formats.contains(&f);
-    let opts = garmentcode::draw::DrawOptions { layout: args.layout.into(), ..Default::default() };
+    let opts = args.png.draw_options(args.layout.into());
     if wants(BuildFormat::Svg) {
         set.add("pattern.svg", garmentcode::draw::to_svg(&built.pattern, &opts).map_err(|e| CliError::Input(e.to_string()))?);
     }
@@ -38,6 +38,14 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
         let mesh = BoxMesh::new(&built.pattern, args.mesh_resolution)
             .map_err(|e| CliError::Input(format!("{design_label} on {body_label}: cannot mesh: {e}")))?;
         for (file, bytes) in mesh.files() {
+            set.add(&file, bytes);
+        }
+    }
+    if wants(BuildFormat::Print) {
+        let opts = garmentcode::fabricate::PrintOptions { garment: name.clone(), size: body_label.clone(), ..Default::default() };
+        let files = garmentcode::fabricate::files(&built.pattern, &opts)
+            .map_err(|e| CliError::Input(format!("{design_label} on {body_label}: cannot print: {e}")))?;
+        for (file, bytes) in files {
             set.add(&file, bytes);
         }
     }
