@@ -146,8 +146,8 @@ pub struct PngArgs {
     /// PNG resolution in dots per inch (default: the reference's 3 px per cm, about 7.6 dpi).
     #[arg(long, value_name = "DPI", value_parser = positive_dpi)]
     pub dpi: Option<f64>,
-    /// PNG background (default: transparent, as the reference's PNG).
-    #[arg(long, value_enum, default_value_t = BackgroundArg::None)]
+    /// PNG background (default: white, for reading; `none` keeps it transparent, as the reference's PNG).
+    #[arg(long, value_enum, default_value_t = BackgroundArg::White)]
     pub background: BackgroundArg,
 }
 
