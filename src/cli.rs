@@ -38,6 +38,9 @@ pub enum Command {
     /// Mesh a pattern for cloth simulation: the reference's box mesh and its files.
     #[command(long_about = MESH_ABOUT)]
     Mesh(MeshArgs),
+    /// Patterns to print, cut and sew: tiled and one-sheet PDF, SVG, DXF-AAMA and a cutting layout.
+    #[command(long_about = PRINT_ABOUT)]
+    Print(PrintArgs),
     /// Run the web configurator (a page with a control for every parameter, and its JSON API).
     #[command(long_about = SERVE_ABOUT)]
     Serve(ServeArgs),
@@ -62,6 +65,16 @@ with per-corner UVs), NAME_material.mtl, NAME_sim_segmentation.txt (a panel name
 per vertex), NAME_orig_lens.pickle (2D rest lengths), NAME_vertex_labels.yaml, NAME_specification.json, \
 and NAME_sim_mesh.obj (metres) and NAME_boxmesh.ply (segments as vertex attributes). NAME is the \
 specification's file name without _specification.json (a plain specification.json: its folder's name).
+
+The output folder is written whole, as `build` writes it.";
+
+const PRINT_ABOUT: &str = "\
+Turn a pattern into pieces a person can print, cut and sew: each panel with its seam allowance \
+(the sew line dashed inside the cut line), notches where seams meet, a grainline, the cut count \
+(mirrored pairs and pieces cut on the fold are found) and labels. DIR gets pattern-tiled.pdf (A4 or \
+Letter pages at 1:1 with a cover page and page map), pattern-sheet.pdf and pattern-sheet.svg (every \
+piece on one sheet, A0 or a roll width), pattern.dxf (DXF-AAMA, R12, millimetres) and \
+cutting-layout.svg/.txt (the pieces on the fabric width and the length of fabric needed).
 
 The output folder is written whole, as `build` writes it.";
 
@@ -127,6 +140,47 @@ impl From<LayoutArg> for garmentcode::draw::Layout {
     }
 }
 
+/// PNG options of the drawings (`build`, `render`).
+#[derive(Args, Debug, Clone)]
+pub struct PngArgs {
+    /// PNG resolution in dots per inch (default: the reference's 3 px per cm, about 7.6 dpi).
+    #[arg(long, value_name = "DPI", value_parser = positive_dpi)]
+    pub dpi: Option<f64>,
+    /// PNG background (default: white, for reading; `none` keeps it transparent, as the reference's PNG).
+    #[arg(long, value_enum, default_value_t = BackgroundArg::White)]
+    pub background: BackgroundArg,
+}
+
+/// PNG background.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BackgroundArg {
+    /// Transparent outside the panels.
+    None,
+    /// White.
+    White,
+}
+
+impl PngArgs {
+    /// The drawing options for `layout` with these PNG settings.
+    pub fn draw_options(&self, layout: garmentcode::draw::Layout) -> garmentcode::draw::DrawOptions {
+        let mut o = garmentcode::draw::DrawOptions { layout, ..Default::default() };
+        if let Some(dpi) = self.dpi {
+            o.px_per_cm = dpi / 2.54;
+        }
+        if self.background == BackgroundArg::White {
+            o.background = Some([255, 255, 255]);
+        }
+        o
+    }
+}
+
+fn positive_dpi(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() && x > 0.0 && x <= 1200.0 => Ok(x),
+        _ => Err(format!("expects a resolution in dots per inch, above 0 and at most 1200, got '{s}'")),
+    }
+}
+
 /// `garmentcode build`.
 #[derive(Args, Debug)]
 pub struct BuildArgs {
@@ -159,6 +213,9 @@ pub struct BuildArgs {
     /// Drawing layout.
     #[arg(short, long, value_enum, default_value_t = LayoutArg::Placed)]
     pub layout: LayoutArg,
+    /// PNG resolution and background.
+    #[command(flatten)]
+    pub png: PngArgs,
     /// Replace an output folder that holds files garmentcode did not write.
     #[arg(short, long)]
     pub force: bool,
@@ -175,6 +232,8 @@ pub enum BuildFormat {
     Png,
     /// The simulation box mesh (as `garmentcode mesh` writes it).
     Mesh,
+    /// The printable pattern (as `garmentcode print` writes it with its defaults).
+    Print,
 }
 
 /// Formats of `schema`.
@@ -234,6 +293,9 @@ pub struct RenderArgs {
     /// Drawing layout.
     #[arg(short, long, value_enum, default_value_t = LayoutArg::Placed)]
     pub layout: LayoutArg,
+    /// PNG resolution and background.
+    #[command(flatten)]
+    pub png: PngArgs,
     /// Draw a pattern with structural errors anyway, and replace an output folder
     /// that holds files garmentcode did not write.
     #[arg(short, long)]
@@ -270,6 +332,13 @@ fn positive_cm(s: &str) -> Result<f64, String> {
     match s.trim().parse::<f64>() {
         Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
         _ => Err(format!("expects a positive number of cm, got '{s}'")),
+    }
+}
+
+fn non_negative_cm(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() && x >= 0.0 => Ok(x),
+        _ => Err(format!("expects a non-negative number of cm, got '{s}'")),
     }
 }
 
@@ -337,6 +406,42 @@ pub struct MeshArgs {
     /// File name prefix (default: from the specification's file name).
     #[arg(long)]
     pub name: Option<String>,
+    /// Replace an output folder that holds files garmentcode did not write.
+    #[arg(short, long)]
+    pub force: bool,
+}
+
+/// `garmentcode print`.
+#[derive(Args, Debug)]
+pub struct PrintArgs {
+    /// The pattern (specification.json).
+    #[arg(value_name = "SPEC.json")]
+    pub file: String,
+    /// Output folder.
+    #[arg(short, long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// Paper: `a4` or `letter` for the tiled pages, `a0` or `roll:WIDTH_CM` for the one-sheet
+    /// (the other one keeps its default: A4 pages, an A0-wide sheet).
+    #[arg(long, value_name = "a4|letter|a0|roll:WIDTH_CM", default_value = "a4", value_parser = garmentcode::fabricate::Paper::parse)]
+    pub paper: garmentcode::fabricate::Paper,
+    /// Seam allowance of every edge, in cm.
+    #[arg(long, value_name = "CM", default_value_t = 1.0, value_parser = non_negative_cm)]
+    pub seam: f64,
+    /// Allowance of hems (edges labelled lower_interface that are not stitched), in cm.
+    #[arg(long, value_name = "CM", value_parser = non_negative_cm)]
+    pub hem: Option<f64>,
+    /// Allowance of one panel (PANEL=CM) or one of its edges (PANEL:EDGE=CM); repeatable.
+    #[arg(long = "seam-edge", value_name = "PANEL[:EDGE]=CM", value_parser = garmentcode::fabricate::EdgeSeam::parse)]
+    pub seam_edges: Vec<garmentcode::fabricate::EdgeSeam>,
+    /// Fabric width for the cutting layout, in cm.
+    #[arg(long, value_name = "CM", default_value_t = 140.0, value_parser = positive_cm)]
+    pub fabric_width: f64,
+    /// Garment name on the labels (default: from the specification's file or folder name).
+    #[arg(long)]
+    pub garment: Option<String>,
+    /// Size on the labels, e.g. the body's name.
+    #[arg(long, default_value = "unspecified")]
+    pub size: String,
     /// Replace an output folder that holds files garmentcode did not write.
     #[arg(short, long)]
     pub force: bool,

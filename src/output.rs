@@ -21,7 +21,9 @@ const MESH_SPEC_SUFFIX: &str = "_specification.json";
 /// A file name garmentcode writes into an output folder.
 fn is_own_file(name: &str) -> bool {
     let mut mesh_suffixes = std::iter::once(MESH_SPEC_SUFFIX).chain(garmentcode::mesh::write::FILE_SUFFIXES);
-    OWN_FILES.contains(&name) || mesh_suffixes.any(|s| name.len() > s.len() && name.ends_with(s))
+    OWN_FILES.contains(&name)
+        || garmentcode::fabricate::FILE_NAMES.contains(&name)
+        || mesh_suffixes.any(|s| name.len() > s.len() && name.ends_with(s))
 }
 
 /// Files of an output folder, written together.

@@ -479,3 +479,76 @@ fn build_formats_choose_drawings_and_the_mesh() {
     assert_eq!(code(&o), 2);
     assert!(!dir.join("b").exists());
 }
+
+#[test]
+fn print_writes_the_printable_pattern() {
+    let dir = scratch("print");
+    let spec = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/cases/t-shirt-mean_all/specification.json");
+    let spec = spec.to_str().unwrap();
+    let o = run(&["print", spec, "--out", "out", "--paper", "letter", "--seam", "1.5", "--hem", "3", "--size", "mean_all"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let names = ["pattern-tiled.pdf", "pattern-sheet.pdf", "pattern-sheet.svg", "pattern.dxf", "cutting-layout.svg", "cutting-layout.txt"];
+    for n in names {
+        assert!(dir.join("out").join(n).is_file(), "{n} missing");
+    }
+    let report = std::fs::read_to_string(dir.join("out/cutting-layout.txt")).unwrap();
+    assert!(report.contains("Fabric length needed") && report.contains("Cut 1 on fold"), "{report}");
+    let svg = std::fs::read_to_string(dir.join("out/pattern-sheet.svg")).unwrap();
+    assert!(svg.contains("Size: mean_all") && svg.contains("Seam allowance 1.5 cm included, hems 3 cm"));
+    // The same again gives the same bytes (and replaces its own folder).
+    let first: Vec<Vec<u8>> = names.iter().map(|n| std::fs::read(dir.join("out").join(n)).unwrap()).collect();
+    assert_eq!(
+        code(&run(&["print", spec, "--out", "out", "--paper", "letter", "--seam", "1.5", "--hem", "3", "--size", "mean_all"], &dir)),
+        0
+    );
+    let again: Vec<Vec<u8>> = names.iter().map(|n| std::fs::read(dir.join("out").join(n)).unwrap()).collect();
+    assert!(first == again);
+    // Bad options are refused clearly.
+    for (args, want) in [
+        (vec!["--paper", "a3"], "a4, letter, a0 or roll"),
+        (vec!["--seam=-1"], "non-negative"),
+        (vec!["--seam-edge", "nope=2"], "no panel 'nope'"),
+        (vec!["--seam-edge", "right_ftorso:99=2"], "has 7 edges"),
+    ] {
+        let mut all = vec!["print", spec, "--out", "bad"];
+        all.extend(args);
+        let o = run(&all, &dir);
+        assert_eq!(code(&o), 2, "{all:?}");
+        assert!(stderr(&o).contains(want), "{all:?}: {}", stderr(&o));
+        assert!(!dir.join("bad").exists());
+    }
+}
+
+#[test]
+fn build_formats_print_writes_the_same_files() {
+    let dir = scratch("build_print");
+    let o = run(&["build", "--design", "t-shirt", "--out", "b", "--formats", "json,print"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(dir.join("b/pattern.dxf").is_file() && dir.join("b/pattern-tiled.pdf").is_file() && !dir.join("b/pattern.svg").exists());
+    let dxf = std::fs::read_to_string(dir.join("b/pattern.dxf")).unwrap();
+    assert!(dxf.contains("AC1009") && dxf.contains("Size: mean_all"));
+}
+
+/// Width, height and colour type from a PNG's IHDR chunk.
+fn png_header(png: &[u8]) -> (u32, u32, u8) {
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let be = |i: usize| u32::from_be_bytes([png[i], png[i + 1], png[i + 2], png[i + 3]]);
+    (be(16), be(20), png[25])
+}
+
+#[test]
+fn png_resolution_and_background_are_chosen() {
+    let dir = scratch("png_dpi");
+    assert_eq!(code(&run(&["build", "--out", "default"], &dir)), 0);
+    let o = run(&["build", "--out", "fine", "--dpi", "76.2", "--background", "white"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let (w0, h0, _) = png_header(&std::fs::read(dir.join("default/pattern.png")).unwrap());
+    let (w1, h1, _) = png_header(&std::fs::read(dir.join("fine/pattern.png")).unwrap());
+    // 76.2 dpi is 30 px per cm: ten times the default 3.
+    assert!((w1 as f64 / w0 as f64 - 10.0).abs() < 0.1 && (h1 as f64 / h0 as f64 - 10.0).abs() < 0.1, "{w0}x{h0} vs {w1}x{h1}");
+    // The same drawing otherwise: the SVG does not change.
+    assert_eq!(std::fs::read(dir.join("default/pattern.svg")).unwrap(), std::fs::read(dir.join("fine/pattern.svg")).unwrap());
+    let o = run(&["render", "default/specification.json", "--out", "r", "--dpi", "0"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("dots per inch"), "{}", stderr(&o));
+}

@@ -69,6 +69,8 @@ pub mod slots;
 
 // Input/output and drawings, apart from geometry.
 pub mod draw;
+#[cfg(feature = "print")]
+pub mod fabricate;
 pub mod io;
 
 // Code that exists only to reproduce the reference bit for bit.

@@ -151,8 +151,8 @@ class Pattern:
         """``specification.json``."""
     def svg(self, layout: str = "placed") -> str:
         """``pattern.svg``; layout "placed" or "flat"."""
-    def png(self, layout: str = "placed") -> bytes:
-        """``pattern.png``; layout "placed" or "flat"."""
+    def png(self, layout: str = "placed", dpi: Optional[float] = None, background: str = "white") -> bytes:
+        """``pattern.png``; layout "placed" or "flat", background "white" or "none"."""
     @property
     def checks(self) -> Optional[Dict[str, Any]]:
         """``checks.json`` with ``passed`` and ``warnings`` (None if read from a file)."""
@@ -175,8 +175,11 @@ class Pattern:
         layout: str = "placed",
         mesh_resolution: float = 1.0,
         force: bool = False,
+        dpi: Optional[float] = None,
+        background: str = "white",
     ) -> List[str]:
-        """Write the files of ``garmentcode build``; returns their names."""
+        """Write the files of ``garmentcode build`` (formats json, svg, png, mesh,
+        print); returns their names."""
 
 def build(design: DesignLike, body: Optional[BodyLike] = None, name: Optional[str] = None) -> Pattern:
     """Build a garment."""

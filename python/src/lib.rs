@@ -11,7 +11,7 @@
 use garmentcode::io::{read_design, read_design_pairs, write_design};
 use garmentcode::mesh::{BoxMesh, VertexLabel};
 use garmentcode::{Kind, Params, Range, Value};
-use garmentcode_cli::cli::{BuildFormat, SampleArgs};
+use garmentcode_cli::cli::{BackgroundArg, BuildFormat, PngArgs, SampleArgs};
 use garmentcode_cli::commands::{self, CliError, build as build_cmd, sample as sample_cmd};
 use garments::Design;
 use garments::sample::{DatasetSampler, Outcome};
@@ -574,6 +574,21 @@ struct PyPattern {
     origin: Option<Origin>,
 }
 
+/// The drawing options of `build` and `render` for a layout (`"placed"` or
+/// `"flat"`), a PNG resolution (`None`: the reference's 3 px per cm) and a PNG
+/// background (`"white"` or `"none"`, transparent as the reference's).
+fn draw_options(layout: &str, dpi: Option<f64>, background: &str) -> PyResult<garmentcode::draw::DrawOptions> {
+    let background = match background {
+        "white" => BackgroundArg::White,
+        "none" => BackgroundArg::None,
+        _ => return Err(PyValueError::new_err(format!("background: expected 'white' or 'none', got '{background}'"))),
+    };
+    if dpi.is_some_and(|d| !(d.is_finite() && d > 0.0 && d <= 1200.0)) {
+        return Err(PyValueError::new_err("dpi: expected a resolution in dots per inch, above 0 and at most 1200"));
+    }
+    Ok(PngArgs { dpi, background }.draw_options(self::layout(layout)?))
+}
+
 /// `"placed"` or `"flat"`.
 fn layout(s: &str) -> PyResult<garmentcode::draw::Layout> {
     match s {
@@ -620,14 +635,16 @@ impl PyPattern {
     /// The drawing as SVG text (`pattern.svg`); layout `"placed"` or `"flat"`.
     #[pyo3(signature = (layout = "placed"))]
     fn svg(&self, py: Python<'_>, layout: &str) -> PyResult<String> {
-        let opts = garmentcode::draw::DrawOptions { layout: self::layout(layout)?, ..Default::default() };
+        let opts = draw_options(layout, None, "white")?;
         py.detach(|| garmentcode::draw::to_svg(&self.pattern, &opts)).map_err(|e| PatternError::new_err(e.to_string()))
     }
 
-    /// The drawing as PNG bytes (`pattern.png`); layout `"placed"` or `"flat"`.
-    #[pyo3(signature = (layout = "placed"))]
-    fn png<'py>(&self, py: Python<'py>, layout: &str) -> PyResult<Bound<'py, PyBytes>> {
-        let opts = garmentcode::draw::DrawOptions { layout: self::layout(layout)?, ..Default::default() };
+    /// The drawing as PNG bytes (`pattern.png`), as `garmentcode build` draws it:
+    /// layout `"placed"` or `"flat"`, `dpi` (default: the reference's 3 px per cm),
+    /// background `"white"` or `"none"` (transparent, as the reference's).
+    #[pyo3(signature = (layout = "placed", dpi = None, background = "white"))]
+    fn png<'py>(&self, py: Python<'py>, layout: &str, dpi: Option<f64>, background: &str) -> PyResult<Bound<'py, PyBytes>> {
+        let opts = draw_options(layout, dpi, background)?;
         let bytes = py.detach(|| garmentcode::draw::to_png(&self.pattern, &opts)).map_err(|e| PatternError::new_err(e.to_string()))?;
         Ok(PyBytes::new(py, &bytes))
     }
@@ -689,12 +706,13 @@ impl PyPattern {
     }
 
     /// Write the pattern's files into the folder `out`, as `garmentcode build`
-    /// does: `specification.json` (always), `pattern.svg`, `pattern.png` and the
-    /// mesh files for the formats `svg`, `png`, `mesh`, and for a built pattern
-    /// `design_params.yaml`, `body_measurements.yaml`, `checks.json`. The folder
-    /// is replaced whole; one holding other files needs `force=True`. Returns the
-    /// names of the files written.
-    #[pyo3(signature = (out, formats = vec!["json".to_string(), "svg".to_string(), "png".to_string()], layout = "placed", mesh_resolution = 1.0, force = false))]
+    /// does: `specification.json` (always), `pattern.svg`, `pattern.png`, the mesh
+    /// files and the printable pattern (`print/`) for the formats `svg`, `png`,
+    /// `mesh`, `print`, and for a built pattern `design_params.yaml`,
+    /// `body_measurements.yaml`, `checks.json`. `layout`, `dpi` and `background`
+    /// as for `png`. The folder is replaced whole; one holding other files needs
+    /// `force=True`. Returns the names of the files written.
+    #[pyo3(signature = (out, formats = vec!["json".to_string(), "svg".to_string(), "png".to_string()], layout = "placed", mesh_resolution = 1.0, force = false, dpi = None, background = "white"))]
     fn write(
         &self,
         py: Python<'_>,
@@ -703,6 +721,8 @@ impl PyPattern {
         layout: &str,
         mesh_resolution: f64,
         force: bool,
+        dpi: Option<f64>,
+        background: &str,
     ) -> PyResult<Vec<String>> {
         let out = PathBuf::from(path_or_str(out)?);
         let mut wanted = Vec::new();
@@ -712,13 +732,22 @@ impl PyPattern {
                 "svg" => BuildFormat::Svg,
                 "png" => BuildFormat::Png,
                 "mesh" => BuildFormat::Mesh,
-                _ => return Err(PyValueError::new_err(format!("formats: unknown format '{f}' (expected a list of json, svg, png, mesh)"))),
+                "print" => BuildFormat::Print,
+                _ => {
+                    return Err(PyValueError::new_err(format!(
+                        "formats: unknown format '{f}' (expected a list of json, svg, png, mesh, print)"
+                    )));
+                }
             });
         }
-        let layout = self::layout(layout)?;
+        let draw = draw_options(layout, dpi, background)?;
         let origin = self.origin.as_ref().map(|o| build_cmd::Origin { design: &o.design, body: &o.body.body, checks: &o.checks });
+        let mut print = garmentcode::fabricate::PrintOptions { garment: self.pattern.name.clone(), ..Default::default() };
+        if let Some(o) = &self.origin {
+            print.size = o.body.name.clone();
+        }
         py.detach(|| {
-            let set = build_cmd::files(&self.pattern, origin, &wanted, layout, mesh_resolution)
+            let set = build_cmd::files(&self.pattern, origin, &wanted, &draw, mesh_resolution, &print)
                 .map_err(|e| PatternError::new_err(format!("{}: {e}", self.pattern.name)))?;
             commands::write_folder(&set, &out, force).map_err(cli_err)?;
             Ok(set.names())

@@ -34,15 +34,17 @@ def test_builtin_designs_and_bodies():
     assert len(p.stitches) == len(p.spec["pattern"]["stitches"])
     assert p.svg().startswith("<?xml") or p.svg().startswith("<svg")
     assert p.png().startswith(b"\x89PNG")
+    assert len(p.png(dpi=30)) > len(p.png()) and p.png(background="none") != p.png()
     assert p.svg(layout="flat") != p.svg()
 
 
 def test_write_equals_the_cli_build(cli, tmp_path):
     pattern = gc.build("fitted-dress", "mean_male")
-    written = pattern.write(tmp_path / "py", formats=["json", "svg", "png", "mesh"])
+    written = pattern.write(tmp_path / "py", formats=["json", "svg", "png", "mesh", "print"])
     assert "specification.json" in written and "fitted-dress_boxmesh.obj" in written
+    assert any(name.startswith("print/") for name in written)
     subprocess.run(
-        [cli, "build", "--design", "fitted-dress", "--body", "mean_male", "--out", str(tmp_path / "cli"), "--formats", "json,svg,png,mesh"],
+        [cli, "build", "--design", "fitted-dress", "--body", "mean_male", "--out", str(tmp_path / "cli"), "--formats", "json,svg,png,mesh,print"],
         check=True,
         capture_output=True,
     )

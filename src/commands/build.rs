@@ -26,7 +26,9 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
     }
     let wanted: Vec<BuildFormat> = args.formats.iter().copied().filter(|&f| !(f == BuildFormat::Png && args.no_png)).collect();
     let origin = Origin { design: &design, body: &body, checks: &built.checks };
-    let set = files(&built.pattern, Some(origin), &wanted, args.layout.into(), args.mesh_resolution)
+    let draw = args.png.draw_options(args.layout.into());
+    let print = garmentcode::fabricate::PrintOptions { garment: name.clone(), size: body_label.clone(), ..Default::default() };
+    let set = files(&built.pattern, Some(origin), &wanted, &draw, args.mesh_resolution, &print)
         .map_err(|e| CliError::Input(format!("{design_label} on {body_label}: {e}")))?;
     write_folder(&set, &args.out, args.force)?;
     eprintln!(
@@ -50,28 +52,33 @@ pub struct Origin<'a> {
 }
 
 /// The files `build` writes for a pattern, in the asked formats: the specification,
-/// the drawings, the mesh files, and (for a pattern built here, with its `origin`)
-/// the design, the body and the checks. An error says what failed (the caller names
-/// the design).
+/// the drawings (drawn with `draw`), the mesh files, the printable pattern (with
+/// `print`), and (for a pattern built here, with its `origin`) the design, the body
+/// and the checks. An error says what failed (the caller names the design).
 pub fn files(
     pattern: &garmentcode::Pattern,
     origin: Option<Origin>,
     formats: &[BuildFormat],
-    layout: garmentcode::draw::Layout,
+    draw: &garmentcode::draw::DrawOptions,
     mesh_resolution: f64,
+    print: &garmentcode::fabricate::PrintOptions,
 ) -> Result<OutputSet, String> {
     let mut set = OutputSet::default();
     set.add("specification.json", pattern.to_json().map_err(|e| e.to_string())?);
-    let opts = garmentcode::draw::DrawOptions { layout, ..Default::default() };
     if formats.contains(&BuildFormat::Svg) {
-        set.add("pattern.svg", garmentcode::draw::to_svg(pattern, &opts).map_err(|e| e.to_string())?);
+        set.add("pattern.svg", garmentcode::draw::to_svg(pattern, draw).map_err(|e| e.to_string())?);
     }
     if formats.contains(&BuildFormat::Png) {
-        set.add("pattern.png", garmentcode::draw::to_png(pattern, &opts).map_err(|e| e.to_string())?);
+        set.add("pattern.png", garmentcode::draw::to_png(pattern, draw).map_err(|e| e.to_string())?);
     }
     if formats.contains(&BuildFormat::Mesh) {
         let mesh = BoxMesh::new(pattern, mesh_resolution).map_err(|e| format!("cannot mesh: {e}"))?;
         for (file, bytes) in mesh.files() {
+            set.add(&file, bytes);
+        }
+    }
+    if formats.contains(&BuildFormat::Print) {
+        for (file, bytes) in garmentcode::fabricate::files(pattern, print).map_err(|e| format!("cannot print: {e}"))? {
             set.add(&file, bytes);
         }
     }

@@ -10,7 +10,7 @@ use garmentcode::mesh::BoxMesh;
 
 /// The file name prefix: the spec's name without `_specification.json`, or for a plain
 /// `specification.json` its folder's name.
-fn prefix(file: &str) -> String {
+pub(crate) fn prefix(file: &str) -> String {
     let path = Path::new(file);
     let stem = path.file_stem().map_or_else(String::new, |s| s.to_string_lossy().into_owned());
     if let Some(name) = stem.strip_suffix("_specification").filter(|n| !n.is_empty()) {

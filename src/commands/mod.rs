@@ -4,6 +4,7 @@ pub mod build;
 pub mod check;
 pub mod compare;
 pub mod mesh;
+pub mod print;
 pub mod render;
 pub mod sample;
 pub mod schema;
@@ -35,10 +36,19 @@ pub fn read_pattern(path: &str) -> Result<Pattern, CliError> {
 /// Add `pattern.svg` (and `pattern.png`) for a non-empty pattern, laid out as
 /// asked.
 pub fn add_drawings(set: &mut OutputSet, pattern: &Pattern, png: bool, layout: garmentcode::draw::Layout) -> garmentcode::Result<()> {
-    let opts = garmentcode::draw::DrawOptions { layout, ..Default::default() };
-    set.add("pattern.svg", garmentcode::draw::to_svg(pattern, &opts)?);
+    add_drawings_with(set, pattern, png, &garmentcode::draw::DrawOptions { layout, ..Default::default() })
+}
+
+/// Add `pattern.svg` (and `pattern.png`) drawn with `opts`.
+pub fn add_drawings_with(
+    set: &mut OutputSet,
+    pattern: &Pattern,
+    png: bool,
+    opts: &garmentcode::draw::DrawOptions,
+) -> garmentcode::Result<()> {
+    set.add("pattern.svg", garmentcode::draw::to_svg(pattern, opts)?);
     if png {
-        set.add("pattern.png", garmentcode::draw::to_png(pattern, &opts)?);
+        set.add("pattern.png", garmentcode::draw::to_png(pattern, opts)?);
     }
     Ok(())
 }

@@ -23,7 +23,7 @@ pub fn run(args: RenderArgs) -> Result<i32, CliError> {
     }
     let mut set = OutputSet::default();
     set.add("specification.json", pattern.to_json().map_err(|e| CliError::Input(format!("{file}: {e}")))?);
-    crate::commands::add_drawings(&mut set, &pattern, !args.no_png, args.layout.into())
+    crate::commands::add_drawings_with(&mut set, &pattern, !args.no_png, &args.png.draw_options(args.layout.into()))
         .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
     write_folder(&set, &args.out, args.force)?;
     eprintln!("wrote {}", args.out.display());

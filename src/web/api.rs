@@ -821,10 +821,21 @@ pub fn files(input: &Json) -> ApiResult<Json> {
 }
 
 /// `POST /api/zip`: the files of [`files`] as one zip archive, in a folder named
-/// after the pattern.
+/// after the pattern, and when the design builds, the files to print, cut and sew
+/// (`garmentcode print`'s, at its defaults: A4, 1 cm seam allowance) in its `print/`.
 pub fn zip_archive(input: &Json) -> ApiResult<(String, Vec<u8>)> {
     let (ev, files) = file_set(input)?;
-    let named: Vec<(String, &[u8])> = files.iter().map(|(n, t)| (format!("{}/{n}", ev.name), t.as_bytes())).collect();
+    let mut named: Vec<(String, &[u8])> = files.iter().map(|(n, t)| (format!("{}/{n}", ev.name), t.as_bytes())).collect();
+    let printed = match &ev.result {
+        Ok(out) => {
+            let internal = |e: garmentcode::Error| ApiError::new(500, format!("internal error: {e}"));
+            let pattern = garmentcode::Pattern::from_json(&out.spec).map_err(internal)?;
+            let opts = garmentcode::fabricate::PrintOptions { garment: ev.name.clone(), size: ev.body_name.clone(), ..Default::default() };
+            garmentcode::fabricate::files(&pattern, &opts).map_err(internal)?
+        }
+        Err(_) => Vec::new(),
+    };
+    named.extend(printed.iter().map(|(n, b)| (format!("{}/print/{n}", ev.name), b.as_slice())));
     let refs: Vec<(&str, &[u8])> = named.iter().map(|(n, b)| (n.as_str(), *b)).collect();
     let bytes = zip::write(&refs).map_err(|e| ApiError::new(500, format!("internal error: {e}")))?;
     Ok((ev.name, bytes))

@@ -593,6 +593,20 @@ fn markers(p: &Pattern, panels: &[PlacedPanel]) -> Result<Vec<Marker>> {
     Ok(out)
 }
 
+/// Font size of a panel's name: the reference's [`FONT_SIZE`], smaller when the
+/// name (about 0.6 em per character) would not fit in 90% of the panel's width or
+/// half its height, but never below [`MIN_NAME_SIZE`].
+fn name_size(name: &str, bbox: &BBox) -> f64 {
+    let size = bbox.max - bbox.min;
+    let chars = name.chars().count().max(1) as f64;
+    let fit = (0.9 * size.x / (0.6 * chars)).min(0.5 * size.y);
+    // Whole millimetres keep the written numbers short.
+    (fit.min(FONT_SIZE) * 10.0).floor().max(MIN_NAME_SIZE * 10.0) / 10.0
+}
+
+/// Smallest font size of panel names, cm.
+pub const MIN_NAME_SIZE: f64 = 1.0;
+
 /// Panel names and (optionally) vertex and edge indices, placed as the reference does.
 fn texts(panels: &[PlacedPanel], opts: &DrawOptions) -> Vec<Text> {
     let mut out = Vec::new();
@@ -601,7 +615,7 @@ fn texts(panels: &[PlacedPanel], opts: &DrawOptions) -> Vec<Text> {
             out.push(Text {
                 pos: q.bbox.centre(),
                 text: q.name.clone(),
-                size: FONT_SIZE,
+                size: name_size(&q.name, &q.bbox),
                 fill: NAME_FILL,
                 anchor: Anchor::MiddleMiddle,
                 kind: TextKind::Name,

@@ -55,8 +55,8 @@ const SMALL_SVG: &str = r#"<?xml version="1.0" encoding="UTF-8" standalone="no"?
 <g id="back"><path d="M 35,-20 C 37,-26 33,-34 35,-40 L 20,-30 L 35,-20 Z" fill="rgb(227,175,186)" stroke="rgb(51,51,51)" stroke-width="0.2"/></g>
 </g>
 <g class="names" font-family="sans-serif">
-<text x="0" y="-37.683" font-size="7" fill="rgb(31,31,31)" text-anchor="middle" dominant-baseline="middle">front</text>
-<text x="27.789" y="-30" font-size="7" fill="rgb(31,31,31)" text-anchor="middle" dominant-baseline="middle">back</text>
+<text x="0" y="-37.683" font-size="6" fill="rgb(31,31,31)" text-anchor="middle" dominant-baseline="middle">front</text>
+<text x="27.789" y="-30" font-size="5.8" fill="rgb(31,31,31)" text-anchor="middle" dominant-baseline="middle">back</text>
 </g>
 <g class="stitches" font-family="sans-serif">
 <g class="stitch" data-stitch="0" data-panel="front" data-edge="0">
@@ -355,4 +355,26 @@ fn flat_layout_has_no_overlaps() {
     }
     assert_eq!("flat".parse::<Layout>(), Ok(Layout::Flat));
     assert!("diagonal".parse::<Layout>().is_err());
+}
+
+#[test]
+fn panel_names_fit_their_panels() {
+    let mut shrunk = 0;
+    for (name, p) in cases() {
+        let sheet = layout::layout(&p, &DrawOptions::default()).unwrap();
+        for (q, t) in sheet.panels.iter().zip(sheet.texts.iter().filter(|t| t.kind == layout::TextKind::Name)) {
+            assert_eq!(q.name, t.text);
+            let size = q.bbox.max - q.bbox.min;
+            let width = 0.6 * t.size * t.text.chars().count() as f64;
+            assert!(t.size <= layout::FONT_SIZE && t.size >= layout::MIN_NAME_SIZE, "{name}/{}", q.name);
+            assert!(
+                t.size == layout::MIN_NAME_SIZE || (width <= 0.9 * size.x + 1e-9 && t.size <= 0.5 * size.y + 1e-9),
+                "{name}/{}: {} cm text",
+                q.name,
+                t.size
+            );
+            shrunk += usize::from(t.size < layout::FONT_SIZE);
+        }
+    }
+    assert!(shrunk > 100, "{shrunk}");
 }

@@ -1,20 +1,29 @@
-//! Constrained Delaunay triangulation of one panel (by `spade`) with interior points
-//! laid out in advance.
+//! Triangulation of one panel: interior points laid out in advance, a constrained
+//! Delaunay triangulation (by `spade`) only where the layout needs one.
 //!
-//! The sampled outline is the constraint set and is never split: the boundary stays
-//! exactly the sampled polyline. Interior points come from an equilateral lattice of
-//! spacing [`LATTICE_SPACING`]`·res` clipped to the panel (even–odd rule, scanline) and
-//! kept at least [`BOUNDARY_CLEARANCE`]`·res` from the outline, so the triangles along
-//! the outline are not slivers. One bulk load triangulates outline and lattice at once
-//! (an outline that crosses itself or repeats a point is inserted constraint by
-//! constraint instead, crossings becoming vertices). Inside edges still longer than the
-//! size bound (between the outline and the first lattice row) are split at their
-//! midpoints until every inside edge is at most `1.43·res`, the reference mesher's size
+//! The sampled outline is never split: the boundary stays exactly the sampled
+//! polyline. Inside it go
+//! - a **row**: one point over the middle of each outline segment, [`ROW_HEIGHT`]`·res`
+//!   inside, so that the triangles on the outline are about isosceles (the reference's
+//!   rest lengths of gathered seams depend on those triangles' shape), unless it comes
+//!   close to the outline or to another row point (narrow parts, corners);
+//! - an equilateral **lattice** of spacing [`LATTICE_SPACING`]`·res`, clipped to the
+//!   panel by the even–odd rule, at least [`BOUNDARY_CLEARANCE`]`·res` farther from the
+//!   outline than the row. Its triangles are output as they are.
+//!
+//! The constrained triangulation covers the strip between the outline and the lattice's
+//! triangles: its points are the outline, the row and the lattice points on the border
+//! of the lattice's triangles (or in none of them), its constraints the outline and
+//! that border, so that by the even–odd rule the strip is inside and the lattice's
+//! triangles are not (an outline that crosses itself or repeats a point is inserted
+//! constraint by constraint instead, crossings becoming vertices, and every interior
+//! point into the triangulation). Strip edges still longer than the size bound are split
+//! at their midpoints until every edge is at most `1.43·res`, the reference mesher's size
 //! criterion.
 //!
 //! This replaces quality refinement (spade's `refine`, Ruppert-style, which locates and
-//! tests every candidate point) because a lattice is already a quality mesh: it costs
-//! one bulk load instead of thousands of incremental insertions.
+//! tests every candidate point): a lattice is already a quality mesh, and a bulk load of
+//! the strip's few points is a fraction of the work.
 
 use std::collections::VecDeque;
 

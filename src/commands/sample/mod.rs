@@ -269,7 +269,7 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
                 made.push(record);
                 Ok(())
             };
-            pool(jobs, slots, todo, index_of, work, collect, report.take())?;
+            pool(jobs, 16 * jobs, slots, todo, index_of, work, collect, report.take())?;
             (made, existing.finished, jobs)
         }
         Layout::Shards(size) => {
@@ -317,7 +317,9 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
                 made.push(record);
                 Ok(())
             };
-            pool(jobs, slots, todo, index_of, work, collect, report.take())?;
+            // Finished samples wait in memory with their files: a few megabytes each with meshes.
+            let queue = if opts.formats.mesh { jobs } else { 16 * jobs };
+            pool(jobs, queue, slots, todo, index_of, work, collect, report.take())?;
             (made, finished, jobs)
         }
     };
@@ -373,9 +375,11 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
 /// (`index_of` gives a slot's index, `None` to skip it), handing each result to
 /// `collect` on this thread. Stops at the first error, after the samples in
 /// progress. `todo` is the number of samples, for the progress line (or for
-/// `report`, which replaces it).
+/// `report`, which replaces it); at most `queue` results wait for `collect`
+/// (workers wait beyond that).
 fn pool<T: Send>(
     jobs: usize,
+    queue: usize,
     slots: u64,
     todo: u64,
     index_of: impl Fn(u64) -> Option<u64> + Sync,
@@ -387,7 +391,7 @@ fn pool<T: Send>(
     let stop = AtomicBool::new(false);
     // Bounded, so that workers faster than the collector (a slow disk, large mesh
     // files) wait instead of piling results up in memory.
-    let (tx, rx) = mpsc::sync_channel::<Result<T, String>>(16 * jobs);
+    let (tx, rx) = mpsc::sync_channel::<Result<T, String>>(queue);
     let mut error: Option<String> = None;
     let mut progress = progress::Progress::new(todo);
     let mut done_count = 0u64;

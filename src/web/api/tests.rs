@@ -251,9 +251,14 @@ fn files_and_zip_hold_every_file() {
     let entries = zip::read_stored(&r.body).unwrap();
     let names: Vec<&str> = entries.iter().map(|(n, _)| n.as_str()).collect();
     assert_eq!(
-        names,
+        names[..5],
         ["top/design_params.yaml", "top/body_measurements.yaml", "top/specification.json", "top/pattern.svg", "top/checks.json"]
     );
+    // Then the files to print, cut and sew: those of `garmentcode print` for this pattern.
+    let print: Vec<String> = garmentcode::fabricate::FILE_NAMES.iter().map(|n| format!("top/print/{n}")).collect();
+    assert_eq!(names[5..], print.iter().map(String::as_str).collect::<Vec<_>>()[..]);
+    let pdf = &entries[5].1;
+    assert!(pdf.starts_with(b"%PDF-"), "a PDF");
     assert_eq!(entries[2].1, f["files"]["specification.json"].as_str().unwrap().as_bytes());
     // A refused design still has its input files, and the reason.
     let (_, f) = post("/api/files", json!({ "design": {} }));

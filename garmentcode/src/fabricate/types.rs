@@ -1,0 +1,206 @@
+//! The pattern pieces and the print options: the types of [`super`].
+
+use super::geom::Xf;
+use crate::error::{Error, Result};
+use crate::math::Vec2;
+
+/// A seam-allowance override for one panel, or one edge of it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EdgeSeam {
+    /// Panel name.
+    pub panel: String,
+    /// Edge index; `None` for every edge of the panel.
+    pub edge: Option<usize>,
+    /// Allowance in cm (0 for none, e.g. a fold).
+    pub cm: f64,
+}
+
+impl EdgeSeam {
+    /// Parse `PANEL=CM` or `PANEL:EDGE=CM`.
+    ///
+    /// ```
+    /// use garmentcode::fabricate::EdgeSeam;
+    /// assert_eq!(EdgeSeam::parse("front:2=3").unwrap(), EdgeSeam { panel: "front".into(), edge: Some(2), cm: 3.0 });
+    /// assert_eq!(EdgeSeam::parse("back=0").unwrap().edge, None);
+    /// assert!(EdgeSeam::parse("back").is_err());
+    /// ```
+    pub fn parse(s: &str) -> std::result::Result<EdgeSeam, String> {
+        let (target, cm) = s.rsplit_once('=').ok_or_else(|| format!("'{s}': expected PANEL=CM or PANEL:EDGE=CM"))?;
+        let cm: f64 = cm.trim().parse().map_err(|_| format!("'{s}': '{cm}' is not a number of cm"))?;
+        if !(cm.is_finite() && cm >= 0.0) {
+            return Err(format!("'{s}': the allowance must be a non-negative number of cm"));
+        }
+        let (panel, edge) = match target.rsplit_once(':') {
+            Some((p, e)) => (p, Some(e.trim().parse().map_err(|_| format!("'{s}': '{e}' is not an edge index"))?)),
+            None => (target, None),
+        };
+        Ok(EdgeSeam { panel: panel.trim().to_string(), edge, cm })
+    }
+}
+
+/// Paper for the printed pattern.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Paper {
+    /// ISO A4 pages (tiled).
+    A4,
+    /// US Letter pages (tiled).
+    Letter,
+    /// One ISO A0 sheet (84.1 cm wide).
+    A0,
+    /// A plotter roll of this width in cm.
+    Roll(f64),
+}
+
+impl Paper {
+    /// Parse `a4`, `letter`, `a0` or `roll:WIDTH_CM`.
+    ///
+    /// ```
+    /// use garmentcode::fabricate::Paper;
+    /// assert_eq!(Paper::parse("roll:91.4").unwrap(), Paper::Roll(91.4));
+    /// assert!(Paper::parse("a3").is_err());
+    /// ```
+    pub fn parse(s: &str) -> std::result::Result<Paper, String> {
+        match s.to_ascii_lowercase().as_str() {
+            "a4" => Ok(Paper::A4),
+            "letter" => Ok(Paper::Letter),
+            "a0" => Ok(Paper::A0),
+            other => match other.strip_prefix("roll:").map(str::parse::<f64>) {
+                Some(Ok(w)) if w.is_finite() && w >= 30.0 => Ok(Paper::Roll(w)),
+                Some(_) => Err(format!("'{s}': a roll width is a number of cm, at least 30")),
+                None => Err(format!("'{s}': expected a4, letter, a0 or roll:WIDTH_CM")),
+            },
+        }
+    }
+
+    /// Page size of a home printer's sheet (cm): the paper itself for A4 and
+    /// Letter, A4 otherwise.
+    pub fn tile_page(self) -> Vec2 {
+        match self {
+            Paper::Letter => Vec2::new(21.59, 27.94),
+            _ => Vec2::new(21.0, 29.7),
+        }
+    }
+
+    /// Width of the one-sheet drawing (cm): the roll's width, A0's otherwise.
+    pub fn sheet_width(self) -> f64 {
+        match self {
+            Paper::Roll(w) => w,
+            _ => 84.1,
+        }
+    }
+}
+
+/// What to print and how.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PrintOptions {
+    /// Seam allowance of every edge (cm).
+    pub seam: f64,
+    /// Allowance of hems (unstitched `lower_interface` edges), when different.
+    pub hem: Option<f64>,
+    /// Per-panel and per-edge overrides (an edge's beats its panel's).
+    pub edge_seams: Vec<EdgeSeam>,
+    /// Paper of the tiled PDF and width of the one-sheet.
+    pub paper: Paper,
+    /// Width of the fabric for the cutting layout (cm).
+    pub fabric_width: f64,
+    /// Garment name on the labels.
+    pub garment: String,
+    /// Size on the labels (the body's name).
+    pub size: String,
+}
+
+impl Default for PrintOptions {
+    fn default() -> Self {
+        PrintOptions {
+            seam: 1.0,
+            hem: None,
+            edge_seams: Vec::new(),
+            paper: Paper::A4,
+            fabric_width: 140.0,
+            garment: "garment".into(),
+            size: "unspecified".into(),
+        }
+    }
+}
+
+impl PrintOptions {
+    /// Refuse negative or non-finite allowances and widths.
+    pub(crate) fn check(&self) -> Result<()> {
+        let ok = |x: f64| x.is_finite() && x >= 0.0;
+        if !ok(self.seam) || !self.hem.is_none_or(ok) {
+            return Err(Error::Input("seam allowances must be non-negative numbers of cm".into()));
+        }
+        if !(self.fabric_width.is_finite() && self.fabric_width > 0.0) {
+            return Err(Error::Input(format!("the fabric width must be a positive number of cm, not {}", self.fabric_width)));
+        }
+        Ok(())
+    }
+}
+
+/// How many times a piece is cut.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Cut {
+    /// Once.
+    One,
+    /// Twice, the same way up.
+    Two,
+    /// Twice, the second mirrored (fabric doubled, or the piece flipped).
+    MirroredPair,
+    /// Once on a fold of the fabric (the piece is half of the cut shape).
+    OnFold,
+}
+
+impl Cut {
+    /// The cut list wording.
+    pub fn text(self) -> &'static str {
+        match self {
+            Cut::One => "Cut 1",
+            Cut::Two => "Cut 2",
+            Cut::MirroredPair => "Cut 2 (mirrored pair)",
+            Cut::OnFold => "Cut 1 on fold",
+        }
+    }
+}
+
+/// A notch: a slit from the cut line into the seam allowance.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Notch {
+    /// The point on the sew line it marks.
+    pub sew: Vec2,
+    /// Its end on the cut line.
+    pub outer: Vec2,
+    /// Its end inside the allowance.
+    pub inner: Vec2,
+    /// The panel edges (panel name, edge index) whose seams it marks.
+    pub edges: Vec<(String, usize)>,
+}
+
+/// One pattern piece, in its own frame (cm, y up, grain along +y).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Piece {
+    /// Name (its panel's).
+    pub name: String,
+    /// The panels it stands for, with the map from each panel's 2D coordinates into
+    /// this frame (the second of a pair is mirrored when the pair is).
+    pub panels: Vec<(String, Xf)>,
+    /// How many to cut.
+    pub cut: Cut,
+    /// The sew line, closed.
+    pub sew: Vec<Vec2>,
+    /// The cut line, closed.
+    pub cut_line: Vec<Vec2>,
+    /// Notches.
+    pub notches: Vec<Notch>,
+    /// The grainline's two ends.
+    pub grain: [Vec2; 2],
+    /// The edge to place on the fold, when cut on the fold.
+    pub fold: Option<[Vec2; 2]>,
+    /// Internal lines (gathering marks).
+    pub internal: Vec<Vec<Vec2>>,
+    /// Where the first label line starts (left end of its baseline).
+    pub label_at: Vec2,
+    /// Height of the label text (cm).
+    pub text_size: f64,
+    /// Label lines: name, garment, size, cut count, grainline.
+    pub labels: Vec<String>,
+}
