@@ -707,7 +707,7 @@ impl PyPattern {
 
     /// Write the pattern's files into the folder `out`, as `garmentcode build`
     /// does: `specification.json` (always), `pattern.svg`, `pattern.png`, the mesh
-    /// files and the printable pattern (`print/`) for the formats `svg`, `png`,
+    /// files and the printable pattern (PDF, SVG sheet, DXF, cutting layout) for the formats `svg`, `png`,
     /// `mesh`, `print`, and for a built pattern `design_params.yaml`,
     /// `body_measurements.yaml`, `checks.json`. `layout`, `dpi` and `background`
     /// as for `png`. The folder is replaced whole; one holding other files needs

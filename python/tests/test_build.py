@@ -42,7 +42,7 @@ def test_write_equals_the_cli_build(cli, tmp_path):
     pattern = gc.build("fitted-dress", "mean_male")
     written = pattern.write(tmp_path / "py", formats=["json", "svg", "png", "mesh", "print"])
     assert "specification.json" in written and "fitted-dress_boxmesh.obj" in written
-    assert any(name.startswith("print/") for name in written)
+    assert "pattern-tiled.pdf" in written and "pattern.dxf" in written
     subprocess.run(
         [cli, "build", "--design", "fitted-dress", "--body", "mean_male", "--out", str(tmp_path / "cli"), "--formats", "json,svg,png,mesh,print"],
         check=True,
