@@ -88,38 +88,7 @@ const CLI_SAMPLES: u64 = 5000;
 
 #[divan::bench(args = [1, 2], sample_count = 3, sample_size = 1)]
 fn cli(bencher: divan::Bencher, jobs: usize) {
-    static RUN: AtomicUsize = AtomicUsize::new(0);
-    let base = std::env::var_os("GARMENTCODE_BENCH_DIR").map_or_else(std::env::temp_dir, PathBuf::from);
-    let root = base.join(format!("garmentcode-bench-{}", std::process::id()));
-    bencher
-        .counter(divan::counter::ItemsCount::new(CLI_SAMPLES))
-        .with_inputs(|| -> PathBuf {
-            let dir = root.join(RUN.fetch_add(1, Ordering::Relaxed).to_string());
-            let _ = std::fs::remove_dir_all(&dir);
-            dir
-        })
-        .bench_local_values(|dir: PathBuf| {
-            let status = Command::new(env!("CARGO_BIN_EXE_garmentcode"))
-                .args([
-                    "sample",
-                    "--n",
-                    &CLI_SAMPLES.to_string(),
-                    "--seed",
-                    &SEED.to_string(),
-                    "--jobs",
-                    &jobs.to_string(),
-                    "--formats",
-                    "json",
-                ])
-                .arg("--out")
-                .arg(&dir)
-                .stderr(std::process::Stdio::null())
-                .status()
-                .expect("garmentcode runs");
-            assert!(status.success());
-            dir
-        });
-    let _ = std::fs::remove_dir_all(&root);
+    run_command(bencher, "json", CLI_SAMPLES, jobs, &["--formats", "json"]);
 }
 
 /// Samples per run of the command benchmark with meshes.
@@ -127,11 +96,17 @@ const MESH_CLI_SAMPLES: u64 = 500;
 
 #[divan::bench(args = [2], sample_count = 3, sample_size = 1)]
 fn cli_mesh(bencher: divan::Bencher, jobs: usize) {
+    run_command(bencher, "mesh", MESH_CLI_SAMPLES, jobs, &["--formats", "json,mesh", "--layout", "shards"]);
+}
+
+/// `garmentcode sample --n n --seed SEED --jobs jobs ARGS` into a fresh folder per run
+/// under `$GARMENTCODE_BENCH_DIR` (named after `tag`), removed after the run (untimed).
+fn run_command(bencher: divan::Bencher, tag: &str, n: u64, jobs: usize, args: &[&str]) {
     static RUN: AtomicUsize = AtomicUsize::new(0);
     let base = std::env::var_os("GARMENTCODE_BENCH_DIR").map_or_else(std::env::temp_dir, PathBuf::from);
-    let root = base.join(format!("garmentcode-bench-mesh-{}", std::process::id()));
+    let root = base.join(format!("garmentcode-bench-{tag}-{}", std::process::id()));
     bencher
-        .counter(divan::counter::ItemsCount::new(MESH_CLI_SAMPLES))
+        .counter(divan::counter::ItemsCount::new(n))
         .with_inputs(|| -> PathBuf {
             let dir = root.join(RUN.fetch_add(1, Ordering::Relaxed).to_string());
             let _ = std::fs::remove_dir_all(&dir);
@@ -139,16 +114,25 @@ fn cli_mesh(bencher: divan::Bencher, jobs: usize) {
         })
         .bench_local_values(|dir: PathBuf| {
             let status = Command::new(env!("CARGO_BIN_EXE_garmentcode"))
-                .args(["sample", "--n", &MESH_CLI_SAMPLES.to_string(), "--seed", &SEED.to_string(), "--jobs", &jobs.to_string()])
-                .args(["--formats", "json,mesh", "--layout", "shards"])
+                .args(["sample", "--n", &n.to_string(), "--seed", &SEED.to_string(), "--jobs", &jobs.to_string()])
+                .args(args)
                 .arg("--out")
                 .arg(&dir)
                 .stderr(std::process::Stdio::null())
                 .status()
                 .expect("garmentcode runs");
             assert!(status.success());
-            let _ = std::fs::remove_dir_all(&dir);
-            dir
+            // Removed when divan drops it, after the timing.
+            Removed(dir)
         });
     let _ = std::fs::remove_dir_all(&root);
+}
+
+/// A folder removed when dropped.
+struct Removed(PathBuf);
+
+impl Drop for Removed {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
 }

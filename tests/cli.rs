@@ -420,16 +420,7 @@ fn mesh_writes_the_reference_files_and_replaces_its_own_folder() {
     assert_eq!(code(&o), 0, "{}", stderr(&o));
     let o = run(&["mesh", "shirt/specification.json", "--out", "m"], &dir);
     assert_eq!(code(&o), 0, "{}", stderr(&o));
-    for suffix in [
-        "_specification.json",
-        "_boxmesh.obj",
-        "_material.mtl",
-        "_sim_segmentation.txt",
-        "_orig_lens.pickle",
-        "_vertex_labels.yaml",
-        "_sim_mesh.obj",
-        "_boxmesh.ply",
-    ] {
+    for suffix in std::iter::once("_specification.json").chain(garmentcode::mesh::write::FILE_SUFFIXES) {
         assert!(dir.join("m").join(format!("shirt{suffix}")).metadata().unwrap().len() > 0, "shirt{suffix} written");
     }
     let obj = std::fs::read_to_string(dir.join("m/shirt_boxmesh.obj")).unwrap();

@@ -53,15 +53,22 @@ impl BoxMesh {
     }
 
     /// Texture coordinates of every panel-local vertex (texture id order): each panel's 2D
-    /// points minus its minimum, islands side by side with 3 cm padding, scaled into `[0, 1]`.
+    /// points minus its minimum, islands laid out as the reference lays them (columns of
+    /// ⌊√panels⌋ islands, 3 cm padding), scaled into `[0, 1]`.
     pub fn texture_coordinates(&self) -> Vec<Vec2> {
+        let per_column = (self.panels.len() as f64).sqrt().floor().max(1.0) as usize;
         let mut uvs = Vec::new();
-        let mut x = UV_PADDING;
-        for p in &self.panels {
+        let (mut x, mut y, mut column_width) = (UV_PADDING, UV_PADDING, 0.0f64);
+        for (i, p) in self.panels.iter().enumerate() {
+            if i > 0 && i % per_column == 0 {
+                x += column_width + UV_PADDING;
+                (y, column_width) = (UV_PADDING, 0.0);
+            }
             let local = p.uv();
-            let width = local.iter().fold(0.0f64, |m, q| m.max(q.x));
-            uvs.extend(local.iter().map(|q| *q + Vec2::new(x, UV_PADDING)));
-            x += width + UV_PADDING;
+            let size = local.iter().fold(Vec2::ZERO, |m, q| m.max(*q));
+            uvs.extend(local.iter().map(|q| *q + Vec2::new(x, y)));
+            y += size.y + UV_PADDING;
+            column_width = column_width.max(size.x);
         }
         let scale = uvs.iter().fold(0.0f64, |m, q| m.max(q.x).max(q.y)) + UV_PADDING;
         uvs.iter().map(|q| *q / scale).collect()
