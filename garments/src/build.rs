@@ -113,7 +113,7 @@ pub fn build_in(arena: &mut Arena, design: &Design, body: &Body, name: &str) -> 
     degenerate(arena)?;
     let pattern = garment.assemble(arena, name);
     degenerate(arena)?;
-    let pattern = pattern?;
+    let pattern = finite(pattern?)?;
     let param_combinations = check_param_combinations(design);
     let checks =
         Checks { param_combinations, total_length, floor_length, total_length_ok: total_length <= floor_length + 1.0, self_intersecting };
@@ -168,10 +168,22 @@ pub fn build_valid_in(arena: &mut Arena, design: &Design, body: &Body, name: &st
     }
     let pattern = garment.assemble(arena, name);
     degenerate(arena).map_err(Refusal::Build)?;
-    let pattern = pattern.map_err(|e| Refusal::Build(e.into()))?;
+    let pattern = pattern.map_err(BuildError::from).and_then(finite).map_err(Refusal::Build)?;
     let param_combinations = check_param_combinations(design);
     let checks = Checks { param_combinations, total_length, floor_length, total_length_ok: true, self_intersecting: false };
     Ok(Built { pattern, checks })
+}
+
+/// A garment program can compute NaN on extreme designs (seen once in 100,000 random
+/// ones); such a pattern cannot be written, so it is refused (the dataset sampler
+/// draws again).
+fn finite(pattern: Pattern) -> Result<Pattern, BuildError> {
+    match pattern.non_finite() {
+        None => Ok(pattern),
+        Some(place) => {
+            Err(BuildError::Geometry(garmentcode::Error::Geometry(format!("the pattern has a number that is not finite at {place}"))))
+        }
+    }
 }
 
 /// Fail as the reference does when a linearisation so far made a piece whose ends

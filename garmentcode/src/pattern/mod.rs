@@ -140,6 +140,47 @@ pub struct StitchSide {
 }
 
 impl Pattern {
+    /// Where the pattern holds a number that is not finite (NaN or infinite), if
+    /// anywhere: the first such place, as `panel 'NAME' vertex 3` and the like. A
+    /// pattern with one cannot be written (see [`Pattern::to_json`]).
+    ///
+    /// ```
+    /// let mut p = garmentcode::Pattern::from_json(r#"{"pattern": {"panels": {"a": {"translation": [0, 0, 0],
+    ///     "rotation": [0, 0, 0], "vertices": [[0, 0], [1, 0], [0, 1]],
+    ///     "edges": [{"endpoints": [0, 1]}, {"endpoints": [1, 2]}, {"endpoints": [2, 0]}]}}, "stitches": []},
+    ///     "properties": {"curvature_coords": "relative", "normalize_panel_translation": false,
+    ///     "normalized_edge_loops": true, "units_in_meter": 100}}"#).unwrap();
+    /// assert_eq!(p.non_finite(), None);
+    /// p.panels[0].vertices[2][1] = f64::NAN;
+    /// assert_eq!(p.non_finite().as_deref(), Some("panel 'a' vertex 2"));
+    /// ```
+    pub fn non_finite(&self) -> Option<String> {
+        let bad = |xs: &[f64]| xs.iter().any(|x| !x.is_finite());
+        for p in &self.panels {
+            if bad(&p.translation) {
+                return Some(format!("panel '{}' translation", p.name));
+            }
+            if bad(&p.rotation) {
+                return Some(format!("panel '{}' rotation", p.name));
+            }
+            if let Some(i) = p.vertices.iter().position(|v| bad(v)) {
+                return Some(format!("panel '{}' vertex {i}", p.name));
+            }
+            for (i, e) in p.edges.iter().enumerate() {
+                let finite = match &e.curvature {
+                    None => true,
+                    Some(Curvature::Quadratic(c)) => !bad(c),
+                    Some(Curvature::Cubic(c1, c2)) => !bad(c1) && !bad(c2),
+                    Some(Curvature::Circle { radius, .. }) => radius.is_finite(),
+                };
+                if !finite {
+                    return Some(format!("panel '{}' edge {i} curvature", p.name));
+                }
+            }
+        }
+        None
+    }
+
     /// An empty pattern.
     pub fn new(name: &str) -> Pattern {
         Pattern {
