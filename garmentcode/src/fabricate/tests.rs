@@ -372,7 +372,9 @@ auditor = doc.audit()
 out["errors"] = len(auditor.errors)
 print(json.dumps(out))
 "#;
-    let run = std::process::Command::new("python3").arg("-c").arg(script).arg(&file).output();
+    // `.ci/run` points GARMENTCODE_EZDXF_PYTHON at a virtual environment with ezdxf.
+    let python = std::env::var("GARMENTCODE_EZDXF_PYTHON").unwrap_or_else(|_| "python3".into());
+    let run = std::process::Command::new(&python).arg("-c").arg(script).arg(&file).output();
     let _ = std::fs::remove_file(&file);
     let out = match run {
         Ok(o) if o.status.success() => o.stdout,
@@ -382,7 +384,7 @@ print(json.dumps(out))
         }
         Ok(o) => panic!("ezdxf failed: {}", String::from_utf8_lossy(&o.stderr)),
         Err(e) => {
-            say(&format!("SKIPPED dxf_reads_back_in_ezdxf: python3 cannot run ({e})\n"));
+            say(&format!("SKIPPED dxf_reads_back_in_ezdxf: {python} cannot run ({e})\n"));
             return;
         }
     };
