@@ -313,6 +313,15 @@ fn shard_files(dir: &Path) -> BTreeMap<String, Vec<u8>> {
     tree(dir).into_iter().filter(|(k, _)| k.starts_with("shard-")).collect()
 }
 
+/// `sample --unpack` of the named shards of `sharded` into `out`.
+fn unpack<'a>(sharded: &Path, shards: impl Iterator<Item = &'a String>, out: &Path) {
+    let paths: Vec<String> = shards.map(|k| s(&sharded.join(k)).to_string()).collect();
+    let mut args = vec!["--unpack"];
+    args.extend(paths.iter().map(String::as_str));
+    args.extend(["--out", s(out)]);
+    sample_ok(&args);
+}
+
 #[test]
 fn shards_hold_the_folder_dataset_and_unpack_to_it() {
     let dir = scratch("shard_layout");
@@ -357,11 +366,7 @@ fn shards_hold_the_folder_dataset_and_unpack_to_it() {
 
     // Unpacked, the shards are the folder layout byte for byte; the summaries agree
     // but for the run section.
-    let mut args = vec!["--unpack"];
-    let paths: Vec<String> = shards.keys().map(|k| s(&sharded.join(k)).to_string()).collect();
-    args.extend(paths.iter().map(String::as_str));
-    args.extend(["--out", s(&unpacked)]);
-    sample_ok(&args);
+    unpack(&sharded, shards.keys(), &unpacked);
     assert_eq!(samples(&unpacked), samples(&folders));
     assert_whole(&unpacked, 5);
     assert_eq!(tree(&sharded)["dataset_properties.yaml"], tree(&folders)["dataset_properties.yaml"]);
@@ -479,11 +484,7 @@ fn mesh_samples_carry_the_box_mesh_in_both_layouts() {
     let shards = shard_files(&sharded);
     let names: Vec<String> = members(&shards["shard-000000.tar"]).into_iter().map(|m| m.0).collect();
     assert!(names.contains(&"rand_0000001.boxmesh.obj".to_string()), "{names:?}");
-    let mut args = vec!["--unpack"];
-    let paths: Vec<String> = shards.keys().map(|k| s(&sharded.join(k)).to_string()).collect();
-    args.extend(paths.iter().map(String::as_str));
-    args.extend(["--out", s(&unpacked)]);
-    sample_ok(&args);
+    unpack(&sharded, shards.keys(), &unpacked);
     assert_eq!(samples(&unpacked), samples(&folders));
     // A rerun with the same formats finds every sample whole.
     let again = sample_ok(&["--n", "4", "--seed", "3", "--out", s(&sharded), "--formats", "json,mesh", "--layout", "shards:2"]);
