@@ -438,6 +438,20 @@ fn crossed_seam_pieces_mesh() {
     }
 }
 
+/// A resolution beyond the panels' size meshes the outlines alone (edges keep their
+/// corners), with no interior points laid out at astronomical distances.
+#[test]
+fn a_resolution_beyond_the_garment_meshes_the_outlines() {
+    let case = &mesh_cases()[0];
+    let name = case.file_name().unwrap().to_string_lossy().into_owned();
+    let pattern = load(&case.join(format!("{name}_specification.json")), &name);
+    for res in [1e3, 1e300] {
+        let mesh = BoxMesh::new(&pattern, res).unwrap_or_else(|e| panic!("resolution {res}: {e}"));
+        assert!(mesh.panels.iter().all(|p| p.points.len() == p.n_boundary), "resolution {res}: interior points");
+        assert_eq!(properties(&mesh), Vec::<String>::new(), "resolution {res}");
+    }
+}
+
 #[test]
 fn real_faults_are_named_errors() {
     let case = &mesh_cases()[0];

@@ -66,7 +66,12 @@ pub(crate) struct PanelTriangulation {
 /// At most `max_interior` lattice points are laid out (an error past that).
 pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, max_interior: usize) -> Result<PanelTriangulation, String> {
     let max_len = SIZE_BOUND * res;
-    let (row, lattice) = interior_points(boundary, segments, res, max_interior)?;
+    // A resolution beyond the panel's size lays out points as for the panel's size (no
+    // lattice, a row within the panel's reach), never at astronomical distances.
+    let (lo, hi) =
+        boundary.iter().fold((Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY)), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let layout_res = res.min((hi - lo).length());
+    let (row, lattice) = interior_points(boundary, segments, layout_res, max_interior)?;
     // The lattice's own triangles are kept as they are; the Delaunay triangulation only
     // fills the strip between the outline and them (the outline, the row, the lattice
     // points on the strip's inner border or in no lattice triangle), with the border's
@@ -76,8 +81,9 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, 
     let mut in_cdt = vec![true; lattice.points.len()];
     lattice_faces.iter().flatten().for_each(|&i| in_cdt[i] = false);
     border.iter().flatten().for_each(|&i| in_cdt[i] = true);
-    // The outline is triangulated nudged too (equal points equally), and kept exact in the output.
-    let nudged: Vec<Vec2> = boundary.iter().map(|p| *p + nudge(p.x.to_bits(), p.y.to_bits(), res)).collect();
+    // The outline is triangulated nudged too (equal points equally), and kept exact in the
+    // output; by at most 0.1% of its spacing, which is below `res` when `res` exceeds the panel.
+    let nudged: Vec<Vec2> = boundary.iter().map(|p| *p + nudge(p.x.to_bits(), p.y.to_bits(), layout_res)).collect();
     let mut all: Vec<Point2<f64>> = nudged.iter().chain(&row).map(|p| Point2::new(p.x, p.y)).collect();
     let mut cdt_index = vec![usize::MAX; lattice.points.len()];
     for (i, p) in lattice.points.iter().enumerate() {
