@@ -478,3 +478,23 @@ fn snapshot_of_a_small_pattern() {
     insta::assert_snapshot!("small_dxf", dxf::write(&ps, &s, &o));
     insta::assert_snapshot!("small_svg", super::svg::sheet(&s));
 }
+
+/// Implausible allowances, fabric widths and rolls are refused at once, with the
+/// allowed range (a 1e9 cm allowance or a 1e308 cm roll used to run without end).
+#[test]
+fn implausible_options_are_refused_with_their_range() {
+    let p = small();
+    let refused = |opts: PrintOptions, range: &str| {
+        let e = files(&p, &opts).err().map(|e| e.to_string()).unwrap_or_default();
+        assert!(e.contains(range), "{opts:?}: {e}");
+    };
+    refused(PrintOptions { seam: 1e9, ..Default::default() }, "from 0 to 20");
+    refused(PrintOptions { hem: Some(f64::NAN), ..Default::default() }, "from 0 to 20");
+    let edge = EdgeSeam::parse("a=1").unwrap();
+    refused(PrintOptions { edge_seams: vec![EdgeSeam { cm: 21.0, ..edge }], ..Default::default() }, "from 0 to 20");
+    refused(PrintOptions { fabric_width: 1e9, ..Default::default() }, "at most 1000");
+    refused(PrintOptions { paper: Paper::Roll(1e308), ..Default::default() }, "from 30 to 1000");
+    assert!(Paper::parse("roll:1e308").unwrap_err().contains("from 30 to 1000"));
+    assert!(EdgeSeam::parse("a=1e9").unwrap_err().contains("from 0 to 20"));
+    assert!(files(&p, &PrintOptions { seam: 20.0, fabric_width: 1000.0, ..Default::default() }).is_ok());
+}

@@ -27,8 +27,8 @@ impl EdgeSeam {
     pub fn parse(s: &str) -> std::result::Result<EdgeSeam, String> {
         let (target, cm) = s.rsplit_once('=').ok_or_else(|| format!("'{s}': expected PANEL=CM or PANEL:EDGE=CM"))?;
         let cm: f64 = cm.trim().parse().map_err(|_| format!("'{s}': '{cm}' is not a number of cm"))?;
-        if !(cm.is_finite() && cm >= 0.0) {
-            return Err(format!("'{s}': the allowance must be a non-negative number of cm"));
+        if !(0.0..=MAX_ALLOWANCE).contains(&cm) {
+            return Err(format!("'{s}': the allowance must be a number of cm from 0 to {MAX_ALLOWANCE}"));
         }
         let (panel, edge) = match target.rsplit_once(':') {
             Some((p, e)) => (p, Some(e.trim().parse().map_err(|_| format!("'{s}': '{e}' is not an edge index"))?)),
@@ -65,8 +65,8 @@ impl Paper {
             "letter" => Ok(Paper::Letter),
             "a0" => Ok(Paper::A0),
             other => match other.strip_prefix("roll:").map(str::parse::<f64>) {
-                Some(Ok(w)) if w.is_finite() && w >= 30.0 => Ok(Paper::Roll(w)),
-                Some(_) => Err(format!("'{s}': a roll width is a number of cm, at least 30")),
+                Some(Ok(w)) if (MIN_ROLL..=MAX_ROLL).contains(&w) => Ok(Paper::Roll(w)),
+                Some(_) => Err(format!("'{s}': a roll width is a number of cm from {MIN_ROLL} to {MAX_ROLL}")),
                 None => Err(format!("'{s}': expected a4, letter, a0 or roll:WIDTH_CM")),
             },
         }
@@ -126,16 +126,36 @@ impl Default for PrintOptions {
 impl PrintOptions {
     /// Refuse negative or non-finite allowances and widths.
     pub(crate) fn check(&self) -> Result<()> {
-        let ok = |x: f64| x.is_finite() && x >= 0.0;
-        if !ok(self.seam) || !self.hem.is_none_or(ok) {
-            return Err(Error::Input("seam allowances must be non-negative numbers of cm".into()));
+        let ok = |x: f64| (0.0..=MAX_ALLOWANCE).contains(&x);
+        if !ok(self.seam) || !self.hem.is_none_or(ok) || !self.edge_seams.iter().all(|e| ok(e.cm)) {
+            return Err(Error::Input(format!("seam allowances must be numbers of cm from 0 to {MAX_ALLOWANCE}")));
         }
-        if !(self.fabric_width.is_finite() && self.fabric_width > 0.0) {
-            return Err(Error::Input(format!("the fabric width must be a positive number of cm, not {}", self.fabric_width)));
+        if !(self.fabric_width > 0.0 && self.fabric_width <= MAX_FABRIC_WIDTH) {
+            return Err(Error::Input(format!(
+                "the fabric width must be a number of cm above 0 and at most {MAX_FABRIC_WIDTH}, not {}",
+                self.fabric_width
+            )));
+        }
+        if let Paper::Roll(w) = self.paper
+            && !(MIN_ROLL..=MAX_ROLL).contains(&w)
+        {
+            return Err(Error::Input(format!("a roll width is a number of cm from {MIN_ROLL} to {MAX_ROLL}, not {w}")));
         }
         Ok(())
     }
 }
+
+/// Largest seam allowance or hem, cm (wider is no allowance but a mistake, and would
+/// make the drawings and layouts unbounded).
+pub const MAX_ALLOWANCE: f64 = 20.0;
+
+/// Narrowest plotter roll, cm.
+pub const MIN_ROLL: f64 = 30.0;
+/// Widest plotter roll, cm.
+pub const MAX_ROLL: f64 = 1000.0;
+
+/// Widest fabric for the cutting layout, cm.
+pub const MAX_FABRIC_WIDTH: f64 = 1000.0;
 
 /// How many times a piece is cut.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
