@@ -25,6 +25,8 @@ const SEED: u64 = 2026;
 struct Case {
     yaml: String,
     body: Body,
+    /// Index of the design in the seed's stream.
+    index: u64,
     with_sleeves: bool,
 }
 
@@ -49,7 +51,7 @@ fn cases() -> &'static [Case] {
             let body = bodies[index as usize % bodies.len()].clone();
             if let Ok(built) = garments::build::build_in(&mut arena, &design, &body, "design") {
                 let with_sleeves = built.pattern.panels.iter().any(|p| p.name.contains("sleeve") || p.name.contains("hood"));
-                out.push(Case { yaml: write_design(&design, space()), body, with_sleeves });
+                out.push(Case { yaml: write_design(&design, space()), body, index, with_sleeves });
             }
         }
         out
@@ -95,7 +97,56 @@ fn summary(label: &str, mut times: Vec<f64>, reference_median: f64, reference_me
     println!("{ratios}");
 }
 
+/// Environment variable that makes the benchmark's executable a child process
+/// building one design of the set once (`INDEX:BODY`, the design's sample index in
+/// the seed's stream and its body's index) and printing the time in nanoseconds.
+const COLD_PROCESS_VAR: &str = "GARMENTCODE_BENCH_COLD_DESIGN";
+
+/// The child of the cold-process measurement: the design is drawn and written to
+/// YAML text (untimed), then read, built and written to JSON once, on a new arena,
+/// as the first build of the process.
+fn cold_process_child(spec: &str) {
+    let (index, body) = spec.split_once(':').expect("INDEX:BODY");
+    let (index, body): (u64, usize) = (index.parse().expect("sample index"), body.parse().expect("body index"));
+    let design: Design = Sampler::new(space().clone()).sample(&mut sample_rng(SEED, index));
+    let name = garments::builtin::BODIES[body].0;
+    let case = Case { yaml: write_design(&design, space()), body: garments::builtin::body(name).expect("built-in body"), index, with_sleeves: false };
+    let start = Instant::now();
+    let len = run(&mut Arena::new(), &case);
+    let ns = start.elapsed().as_nanos();
+    std::hint::black_box(len);
+    println!("{ns}");
+}
+
+/// The first build in a fresh process of `count` designs spread over the set, one
+/// child process each: the time of each.
+fn cold_process(set: &[Case], count: usize) -> Vec<f64> {
+    let exe = std::env::current_exe().expect("the benchmark's executable");
+    let bodies = garments::builtin::BODIES.len();
+    (0..count)
+        .map(|k| {
+            let case = &set[k * set.len() / count];
+            let out = std::process::Command::new(&exe)
+                .env(COLD_PROCESS_VAR, format!("{}:{}", case.index, case.index as usize % bodies))
+                .output()
+                .expect("the benchmark runs itself");
+            assert!(out.status.success(), "child failed: {}", String::from_utf8_lossy(&out.stderr));
+            let ns: f64 = String::from_utf8_lossy(&out.stdout).trim().parse().expect("the child prints nanoseconds");
+            ns * 1e-9
+        })
+        .collect()
+}
+
+fn median(mut t: Vec<f64>) -> f64 {
+    t.sort_by(f64::total_cmp);
+    percentile(&t, 0.5)
+}
+
 fn main() {
+    if let Ok(spec) = std::env::var(COLD_PROCESS_VAR) {
+        cold_process_child(&spec);
+        return;
+    }
     divan::main();
     // Under `cargo test` the harness runs every benchmark once; the per-design
     // summary is for `cargo bench` only.
@@ -104,21 +155,47 @@ fn main() {
     }
     let set = cases();
     let mut arena = Arena::new();
-    const RUNS: usize = 7;
-    let mut per_design = Vec::with_capacity(set.len());
-    for case in set {
-        let mut t: Vec<f64> = (0..RUNS)
-            .map(|_| {
-                let start = Instant::now();
-                std::hint::black_box(run(&mut arena, case));
-                start.elapsed().as_secs_f64()
-            })
-            .collect();
-        t.sort_by(f64::total_cmp);
-        per_design.push((t[RUNS / 2], case.with_sleeves));
+    // Passes over the set in order: each design's first build in a pass follows
+    // another design's (cold stream), the builds repeated right after it are warm.
+    const PASSES: usize = 3;
+    const WARM_RUNS: usize = 7;
+    let mut cold = vec![Vec::with_capacity(PASSES); set.len()];
+    let mut warm = vec![Vec::with_capacity(PASSES * WARM_RUNS); set.len()];
+    let time = |arena: &mut Arena, case: &Case| {
+        let start = Instant::now();
+        std::hint::black_box(run(arena, case));
+        start.elapsed().as_secs_f64()
+    };
+    for _ in 0..PASSES {
+        for (i, case) in set.iter().enumerate() {
+            cold[i].push(time(&mut arena, case));
+            for _ in 0..WARM_RUNS {
+                warm[i].push(time(&mut arena, case));
+            }
+        }
     }
+    let warm: Vec<f64> = warm.into_iter().map(median).collect();
+    let cold: Vec<f64> = cold.into_iter().map(median).collect();
+    const CHILDREN: usize = 40;
+    let process = cold_process(set, CHILDREN);
     println!();
-    println!("Per design (median of {RUNS} runs each), design file to JSON text, one thread:");
-    summary("all designs", per_design.iter().map(|d| d.0).collect(), 0.10, Some(0.48));
-    summary("with sleeves or hoods", per_design.iter().filter(|d| d.1).map(|d| d.0).collect(), 1.4, None);
+    println!("Per design, design file to JSON text, one thread:");
+    println!("warm: median of {} repeated builds of the design", PASSES * WARM_RUNS);
+    summary("all designs", warm.clone(), 0.10, Some(0.48));
+    let sleeved = |t: &[f64]| set.iter().zip(t).filter(|(c, _)| c.with_sleeves).map(|(_, t)| *t).collect::<Vec<f64>>();
+    summary("with sleeves or hoods", sleeved(&warm), 1.4, None);
+    println!("cold stream: each design built once after another design, median of {PASSES} passes over the set");
+    summary("all designs", cold.clone(), 0.10, Some(0.48));
+    summary("with sleeves or hoods", sleeved(&cold), 1.4, None);
+    println!("cold process: the first build in a fresh process, {CHILDREN} designs");
+    summary("all designs", process.clone(), 0.10, Some(0.48));
+    let (w, c, p) = (median(warm), median(cold), median(process));
+    println!(
+        "medians: warm {:.4} ms, cold stream {:.4} ms (×{:.2} warm), cold process {:.4} ms (×{:.2} warm)",
+        w * 1e3,
+        c * 1e3,
+        c / w,
+        p * 1e3,
+        p / w
+    );
 }
