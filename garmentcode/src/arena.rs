@@ -301,7 +301,6 @@ impl Arena {
 
     /// Forget everything (keeping the allocations) to build another garment.
     pub fn clear(&mut self) {
-        crate::memo::clear();
         self.verts.clear();
         self.edges.clear();
         self.panels.clear();

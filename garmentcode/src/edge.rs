@@ -259,7 +259,7 @@ impl Edge {
 
     /// As [`Edge::linearize`], appending the points to `out`.
     ///
-    /// Memoised per garment (see `memo`): bounding boxes, normals and placements
+    /// Memoised per thread (see `memo`): bounding boxes, normals and placements
     /// linearise the same edges over and over while a garment is built. Each Bézier
     /// point costs an inverse arc length (several adaptive quadratures), each arc
     /// point a few transcendental functions. In the relative frame a Bézier's points

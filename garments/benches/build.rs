@@ -5,11 +5,18 @@
 //! as empty garments, are left out of the set).
 //!
 //! `cargo bench -p garments --bench build` prints divan's figures for the whole set
-//! (time per design = time per iteration / set size) and then, per design, the
-//! median of several runs summarised over the set (median, mean, 90th percentile,
-//! worst; designs with sleeves or hoods separately), with the speed-up against the
-//! reference's figures on this machine kind (median 0.10 s, mean 0.48 s; with
-//! sleeves median 1.4 s).
+//! (time per design = time per iteration / set size) and then, per design,
+//! summarised over the set (median, mean, 90th percentile, worst; designs with
+//! sleeves or hoods separately), side by side:
+//!
+//! - warm: the median of repeated builds of the same design;
+//! - cold stream: the first build of each design, the set built in order on a
+//!   thread that built nothing before (as a dataset run meets new designs);
+//! - cold process: the first build in a fresh process (the benchmark runs its own
+//!   executable for a few dozen designs of the set, each building one design once);
+//!
+//! with the medians' ratios, and the speed-up against the reference's figures on
+//! this machine kind (median 0.10 s, mean 0.48 s; with sleeves median 1.4 s).
 
 use std::sync::OnceLock;
 use std::time::Instant;
@@ -35,27 +42,31 @@ fn space() -> &'static DesignSpace {
     SPACE.get_or_init(Design::design_space)
 }
 
-/// The fixed set of design files, each with its body.
+/// The fixed set of design files, each with its body. Made on a thread of its own:
+/// the per-thread memo tables of the geometry (see `garmentcode::memo`) of the
+/// measuring thread then hold nothing of the set.
 fn cases() -> &'static [Case] {
     static CASES: OnceLock<Vec<Case>> = OnceLock::new();
-    CASES.get_or_init(|| {
-        let sampler = Sampler::new(space().clone());
-        let bodies: Vec<Body> = garments::builtin::BODIES.iter().map(|(n, _)| garments::builtin::body(n).expect("built-in body")).collect();
-        let mut out = Vec::with_capacity(SET_SIZE);
-        let mut arena = Arena::new();
-        for index in 0.. {
-            if out.len() == SET_SIZE {
-                break;
-            }
-            let design: Design = sampler.sample(&mut sample_rng(SEED, index));
-            let body = bodies[index as usize % bodies.len()].clone();
-            if let Ok(built) = garments::build::build_in(&mut arena, &design, &body, "design") {
-                let with_sleeves = built.pattern.panels.iter().any(|p| p.name.contains("sleeve") || p.name.contains("hood"));
-                out.push(Case { yaml: write_design(&design, space()), body, index, with_sleeves });
-            }
+    CASES.get_or_init(|| std::thread::spawn(make_cases).join().expect("the set is made"))
+}
+
+fn make_cases() -> Vec<Case> {
+    let sampler = Sampler::new(space().clone());
+    let bodies: Vec<Body> = garments::builtin::BODIES.iter().map(|(n, _)| garments::builtin::body(n).expect("built-in body")).collect();
+    let mut out = Vec::with_capacity(SET_SIZE);
+    let mut arena = Arena::new();
+    for index in 0.. {
+        if out.len() == SET_SIZE {
+            break;
         }
-        out
-    })
+        let design: Design = sampler.sample(&mut sample_rng(SEED, index));
+        let body = bodies[index as usize % bodies.len()].clone();
+        if let Ok(built) = garments::build::build_in(&mut arena, &design, &body, "design") {
+            let with_sleeves = built.pattern.panels.iter().any(|p| p.name.contains("sleeve") || p.name.contains("hood"));
+            out.push(Case { yaml: write_design(&design, space()), body, index, with_sleeves });
+        }
+    }
+    out
 }
 
 /// Design file text to pattern JSON text; returns the JSON's length.
@@ -110,7 +121,12 @@ fn cold_process_child(spec: &str) {
     let (index, body): (u64, usize) = (index.parse().expect("sample index"), body.parse().expect("body index"));
     let design: Design = Sampler::new(space().clone()).sample(&mut sample_rng(SEED, index));
     let name = garments::builtin::BODIES[body].0;
-    let case = Case { yaml: write_design(&design, space()), body: garments::builtin::body(name).expect("built-in body"), index, with_sleeves: false };
+    let case = Case {
+        yaml: write_design(&design, space()),
+        body: garments::builtin::body(name).expect("built-in body"),
+        index,
+        with_sleeves: false,
+    };
     let start = Instant::now();
     let len = run(&mut Arena::new(), &case);
     let ns = start.elapsed().as_nanos();
@@ -154,37 +170,31 @@ fn main() {
         return;
     }
     let set = cases();
-    let mut arena = Arena::new();
-    // Passes over the set in order: each design's first build in a pass follows
-    // another design's (cold stream), the builds repeated right after it are warm.
-    const PASSES: usize = 3;
+    // On a new thread, whose memo tables are empty: each design's first build there
+    // follows the other designs' (cold stream: no design built before, but what it
+    // shares with earlier designs is memoised, as in a dataset run); the builds
+    // repeated right after it are warm.
     const WARM_RUNS: usize = 7;
-    let mut cold = vec![Vec::with_capacity(PASSES); set.len()];
-    let mut warm = vec![Vec::with_capacity(PASSES * WARM_RUNS); set.len()];
-    let time = |arena: &mut Arena, case: &Case| {
-        let start = Instant::now();
-        std::hint::black_box(run(arena, case));
-        start.elapsed().as_secs_f64()
-    };
-    for _ in 0..PASSES {
-        for (i, case) in set.iter().enumerate() {
-            cold[i].push(time(&mut arena, case));
-            for _ in 0..WARM_RUNS {
-                warm[i].push(time(&mut arena, case));
-            }
-        }
-    }
-    let warm: Vec<f64> = warm.into_iter().map(median).collect();
-    let cold: Vec<f64> = cold.into_iter().map(median).collect();
+    let (cold, warm): (Vec<f64>, Vec<f64>) = std::thread::spawn(move || {
+        let mut arena = Arena::new();
+        let time = |arena: &mut Arena, case: &Case| {
+            let start = Instant::now();
+            std::hint::black_box(run(arena, case));
+            start.elapsed().as_secs_f64()
+        };
+        set.iter().map(|case| (time(&mut arena, case), median((0..WARM_RUNS).map(|_| time(&mut arena, case)).collect()))).unzip()
+    })
+    .join()
+    .expect("the measuring thread runs");
     const CHILDREN: usize = 40;
     let process = cold_process(set, CHILDREN);
     println!();
     println!("Per design, design file to JSON text, one thread:");
-    println!("warm: median of {} repeated builds of the design", PASSES * WARM_RUNS);
+    println!("warm: median of {WARM_RUNS} builds of the design repeated after its first");
     summary("all designs", warm.clone(), 0.10, Some(0.48));
     let sleeved = |t: &[f64]| set.iter().zip(t).filter(|(c, _)| c.with_sleeves).map(|(_, t)| *t).collect::<Vec<f64>>();
     summary("with sleeves or hoods", sleeved(&warm), 1.4, None);
-    println!("cold stream: each design built once after another design, median of {PASSES} passes over the set");
+    println!("cold stream: the first build of each design, one after the other (the set in order)");
     summary("all designs", cold.clone(), 0.10, Some(0.48));
     summary("with sleeves or hoods", sleeved(&cold), 1.4, None);
     println!("cold process: the first build in a fresh process, {CHILDREN} designs");

@@ -429,6 +429,32 @@ mod tests {
         assert!(compared > 60 && sleeved_torso_refused > 3, "{compared} designs compared, {sleeved_torso_refused} sleeved torsos refused");
     }
 
+    /// The geometry's memo tables are kept from garment to garment on a thread: a
+    /// sample is the same whatever the thread built before it.
+    #[test]
+    fn samples_do_not_depend_on_what_the_thread_built_before() {
+        let patterns = |order: Vec<u64>| -> Vec<(u64, String)> {
+            std::thread::spawn(move || {
+                let s = DatasetSampler::with_defaults(7);
+                let mut arena = Arena::new();
+                let drawn = order.into_iter().map(|i| (i, s.draw_in(&mut arena, i)));
+                drawn
+                    .filter_map(|(i, o)| if let Outcome::Accepted(x) = o { Some((i, x.built.pattern.to_json().ok()?)) } else { None })
+                    .collect()
+            })
+            .join()
+            .expect("the thread draws")
+        };
+        let forward = patterns((0..24).collect());
+        let mut backward = patterns((0..24).rev().collect());
+        backward.reverse();
+        assert_eq!(forward.len(), 24);
+        assert!(forward == backward, "the order of drawing changed a sample");
+        for (i, json) in forward.iter().step_by(6) {
+            assert!(patterns(vec![*i])[0].1 == *json, "sample {i} drawn alone differs");
+        }
+    }
+
     #[test]
     fn garment_types_follow_the_reference_stats() {
         let mut d = Design::defaults();

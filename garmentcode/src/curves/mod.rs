@@ -15,7 +15,7 @@ use crate::math::{Vec2, abs_to_rel_vector, norm};
 /// every point of a ray fits exactly; the optimiser's path decides which one, so
 /// the path is reproduced faithfully.
 ///
-/// Fits are memoised per thread until the arena is cleared, like
+/// Fits are memoised per thread, like
 /// [`match_tangents`]: the result is a pure function of the inputs' bits.
 ///
 /// ```

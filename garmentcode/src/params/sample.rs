@@ -14,6 +14,7 @@ use super::space::DesignSpace;
 use super::spec::{Kind, ParamSpec, Range, Value};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::{RngCore, SeedableRng};
+use std::borrow::Cow;
 
 /// The generator of sample `index` for `seed`: ChaCha8 seeded with `seed`, on
 /// stream `index`.
@@ -47,7 +48,7 @@ impl Sampler {
 
     /// One random design as `(path, value)` pairs in document order.
     pub fn sample_values(&self, rng: &mut impl RngCore) -> Vec<(String, Value)> {
-        self.space.params().iter().zip(&self.choices).map(|(p, c)| (p.path.clone(), draw(p, c, rng))).collect()
+        self.space.params().iter().zip(&self.choices).map(|(p, c)| (p.path.clone(), draw(p, c, rng).into_owned())).collect()
     }
 
     /// One random design as a typed parameter tree.
@@ -85,14 +86,16 @@ fn fresh_choices(p: &ParamSpec) -> Vec<Value> {
 
 #[cfg(test)]
 fn sample_one(p: &ParamSpec, rng: &mut impl RngCore) -> Value {
-    draw(p, &fresh_choices(p), rng)
+    draw(p, &fresh_choices(p), rng).into_owned()
 }
 
-/// One draw of `p`; `choices` are its [`fresh_choices`].
-fn draw(p: &ParamSpec, choices: &[Value], rng: &mut impl RngCore) -> Value {
+/// One draw of `p`; `choices` are its [`fresh_choices`]. A default or an option
+/// is borrowed (a design is set from it; cloning the option names cost more than
+/// drawing them).
+fn draw<'a>(p: &'a ParamSpec, choices: &'a [Value], rng: &mut impl RngCore) -> Cow<'a, Value> {
     let keep = p.default_prob.is_some_and(|prob| unit(rng) < prob);
     if keep {
-        return p.default.clone();
+        return Cow::Borrowed(&p.default);
     }
     let exclude = p.default_prob.is_some();
     match (&p.kind, &p.range) {
@@ -101,7 +104,7 @@ fn draw(p: &ParamSpec, choices: &[Value], rng: &mut impl RngCore) -> Value {
             loop {
                 let v = lo + below(rng, (hi - lo + 1) as u64) as i64;
                 if !(exclude && Value::Int(v).loosely_eq(&p.default)) {
-                    return Value::Int(v);
+                    return Cow::Owned(Value::Int(v));
                 }
             }
         }
@@ -110,17 +113,17 @@ fn draw(p: &ParamSpec, choices: &[Value], rng: &mut impl RngCore) -> Value {
             loop {
                 let v = lo + (hi - lo) * unit(rng);
                 if !(exclude && (v - def).abs() < 1e-4) {
-                    return Value::Float(v);
+                    return Cow::Owned(Value::Float(v));
                 }
             }
         }
         (_, Range::Options(_)) => {
             if choices.is_empty() {
-                return p.default.clone();
+                return Cow::Borrowed(&p.default);
             }
-            choices[below(rng, choices.len() as u64) as usize].clone()
+            Cow::Borrowed(&choices[below(rng, choices.len() as u64) as usize])
         }
-        _ => p.default.clone(),
+        _ => Cow::Borrowed(&p.default),
     }
 }
 

@@ -48,8 +48,8 @@ pub type V2 = [f64; 2];
 /// objective: deterministic, continuous in all inputs, at least as good as the reference on
 /// its own objective on every logged call.
 ///
-/// Results are memoised per thread until the arena is cleared (a pure function of
-/// its inputs' bits: the memo changes nothing but the time taken).
+/// Results are memoised per thread (a pure function of its inputs' bits: the memo
+/// changes nothing but the time taken).
 pub fn match_tangents(cps: [V2; 4], t0: V2, t1: V2, target_len: f64) -> [V2; 4] {
     let mut key = [0u64; 13];
     let inputs = cps.iter().flatten().chain(&t0).chain(&t1).chain(std::iter::once(&target_len));
