@@ -405,10 +405,12 @@ fn a_sharded_run_resumes_shard_by_shard() {
     let args = ["--n", "25", "--seed", "6", "--layout", "shards:10", "--out", s(&out)];
     sample_ok(&args);
     let before = tree(&out);
-    // Shard 1 deleted, a temporary of shard 2 and one of shard 1 left behind.
+    // Shard 1 deleted, a temporary of shard 2 and one of shard 1 left behind, and
+    // the index being gathered by a killed run.
     fs::remove_file(out.join("shard-000001.tar")).unwrap();
     fs::write(out.join(".shard-000001.tar.tmp-99999"), b"half a shard").unwrap();
     fs::write(out.join(".shard-000002.tar.tmp-99998"), b"half a shard").unwrap();
+    fs::write(out.join(".index.jsonl.parts-99997"), b"{\"key\": \"rand_0000003\"}\n").unwrap();
     let err = sample_ok(&args);
     assert!(err.contains("removed 2 unfinished shard(s)"), "{err}");
     assert!(err.contains("resuming: 2 of 3 shards already made"), "{err}");
