@@ -405,10 +405,12 @@ fn a_sharded_run_resumes_shard_by_shard() {
     let args = ["--n", "25", "--seed", "6", "--layout", "shards:10", "--out", s(&out)];
     sample_ok(&args);
     let before = tree(&out);
-    // Shard 1 deleted, a temporary of shard 2 and one of shard 1 left behind.
+    // Shard 1 deleted, a temporary of shard 2 and one of shard 1 left behind, and
+    // the index being gathered by a killed run.
     fs::remove_file(out.join("shard-000001.tar")).unwrap();
     fs::write(out.join(".shard-000001.tar.tmp-99999"), b"half a shard").unwrap();
     fs::write(out.join(".shard-000002.tar.tmp-99998"), b"half a shard").unwrap();
+    fs::write(out.join(".index.jsonl.parts-99997"), b"{\"key\": \"rand_0000003\"}\n").unwrap();
     let err = sample_ok(&args);
     assert!(err.contains("removed 2 unfinished shard(s)"), "{err}");
     assert!(err.contains("resuming: 2 of 3 shards already made"), "{err}");
@@ -489,4 +491,23 @@ fn mesh_samples_carry_the_box_mesh_in_both_layouts() {
     // A rerun with the same formats finds every sample whole.
     let again = sample_ok(&["--n", "4", "--seed", "3", "--out", s(&sharded), "--formats", "json,mesh", "--layout", "shards:2"]);
     assert!(again.contains("0 made") || again.contains("4 already there"), "{again}");
+}
+
+#[test]
+fn samples_made_into_dev_null_are_discarded() {
+    if !Path::new("/dev/null").exists() {
+        eprintln!("skipped: this system has no /dev/null");
+        return;
+    }
+    for layout in ["folders", "shards:4"] {
+        let err = sample_ok(&["--n", "9", "--seed", "3", "--layout", layout, "--jobs", "2", "--out", "/dev/null"]);
+        assert!(err.contains("/dev/null: 9 samples (9 made"), "{layout}: {err}");
+        assert!(err.contains("none written"), "{layout}: {err}");
+    }
+    // The same tally as the run that writes.
+    let dir = scratch("dev_null");
+    let err = sample_ok(&["--n", "9", "--seed", "3", "--out", s(&dir.join("data"))]);
+    let rejected = |e: &str| e.split("; ").find(|p| p.contains("designs rejected")).map(str::to_string);
+    let null = sample_ok(&["--n", "9", "--seed", "3", "--out", "/dev/null"]);
+    assert_eq!(rejected(&err), rejected(&null));
 }

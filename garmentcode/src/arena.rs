@@ -190,6 +190,17 @@ pub(crate) struct InterfaceData {
     pub ruffle: Vec<Ruffle>,
 }
 
+impl InterfaceData {
+    /// Make this record equal to `other`, in its own buffers.
+    pub fn copy_from(&mut self, other: &InterfaceData) {
+        self.edges.0.clone_from(&other.edges.0);
+        self.panels.clone_from(&other.panels);
+        self.right_wrong.clone_from(&other.right_wrong);
+        self.flipping.clone_from(&other.flipping);
+        self.ruffle.clone_from(&other.ruffle);
+    }
+}
+
 /// Stored panel.
 #[derive(Clone, Debug)]
 pub(crate) struct PanelData {
@@ -241,6 +252,10 @@ pub struct Arena {
     /// [`Arena::take_degenerate_linearization`]).
     degenerate_linearization: std::cell::Cell<Option<Vec2>>,
 }
+
+/// Interface records kept for reuse by [`Arena::clear`] at most (a garment of the
+/// library makes up to a few hundred).
+const MAX_SPARE_INTERFACES: usize = 4096;
 
 impl Default for Arena {
     fn default() -> Self {
@@ -306,8 +321,11 @@ impl Arena {
         self.edges.clear();
         self.panels.clear();
         // A garment makes dozens of interfaces of four or five small vectors each:
-        // the next garment reuses their buffers.
+        // the next garment reuses their buffers. Every record is made from a spare
+        // when there is one, so the spares stay as many as the largest garment's;
+        // the cap keeps a flat memory whatever a garment program does.
         self.spare_interfaces.append(&mut self.interfaces);
+        self.spare_interfaces.truncate(MAX_SPARE_INTERFACES);
         self.labels.truncate(1);
         self.degenerate_linearization.set(None);
     }
@@ -528,6 +546,25 @@ mod tests {
     use super::*;
     use crate::arena::EdgeSeq;
     use crate::edge::Curve;
+
+    #[test]
+    fn garments_built_one_after_another_in_an_arena_keep_its_memory_flat() {
+        let mut a = Arena::new();
+        let mut spares = Vec::new();
+        for _ in 0..20 {
+            a.clear();
+            let corners = [Vec2::ZERO, Vec2::new(0.0, 30.0), Vec2::new(20.0, 30.0), Vec2::new(20.0, 0.0)];
+            let edges = EdgeSeq::from_points(&mut a, &corners, true).unwrap();
+            let panel = a.panel_with_edges("front", edges.clone());
+            a.interface(panel, edges[0]);
+            a.interface(panel, edges.slice(1, 3));
+            // A copy of the panel copies its interfaces.
+            let copy = a.copy_part(&panel);
+            assert_eq!(copy.interfaces(&a).len(), 2);
+            spares.push(a.spare_interfaces.len() + a.interfaces.len());
+        }
+        assert!(spares.iter().all(|&n| n == 4), "interface records kept: {spares:?}");
+    }
 
     #[test]
     fn a_linearisation_piece_with_coinciding_ends_is_refused_as_the_reference_does() {

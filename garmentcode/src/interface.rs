@@ -37,7 +37,7 @@ impl Arena {
 
     /// An empty interface record, with the buffers of one of a previous garment
     /// when there is one.
-    fn blank_interface(&mut self) -> InterfaceData {
+    pub(crate) fn blank_interface(&mut self) -> InterfaceData {
         let Some(mut d) = self.spare_interfaces.pop() else { return InterfaceData::default() };
         d.edges.0.clear();
         d.panels.clear();

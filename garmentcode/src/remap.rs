@@ -122,7 +122,10 @@ impl Remap for InterfaceId {
         if !src.panels.iter().any(|p| map.panel(*p).is_some()) {
             return *self;
         }
-        let mut d = src.clone();
+        // Into the buffers of a spare record, as `Arena::interface` does: a clone
+        // would add a record to the spares at every `Arena::clear`.
+        let mut d = a.blank_interface();
+        d.copy_from(a.iface(*self));
         for e in d.edges.iter_mut() {
             *e = map.edge(*e).unwrap_or(*e);
         }

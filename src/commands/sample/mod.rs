@@ -29,7 +29,7 @@ use garmentcode::io::write_design;
 use garmentcode::{Arena, Params};
 use garments::Design;
 use garments::sample::{DatasetSampler, MAX_ATTEMPTS, NamedBody, Outcome, sample_name};
-use std::collections::{BTreeMap, HashSet};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::mpsc;
@@ -242,19 +242,33 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
         return replay(&sampler, &opts, index, attempt);
     }
     let n = opts.n.expect("--n is required without --replay");
-    prepare_out(&opts.out)?;
+    // `--out /dev/null`: every sample is made (its files too) and discarded; nothing
+    // is read or written. The floor the file system adds to.
+    let discard = opts.out == Path::new("/dev/null");
+    if !discard {
+        prepare_out(&opts.out)?;
+    }
 
     let settings = Settings::new(&sampler, opts.formats);
     let (shard_i, shard_k) = opts.shard.unwrap_or((0, 1));
     let wanted = |i: u64| i % shard_k == shard_i;
     let start = Instant::now();
-    let (made, existing, jobs) = match opts.layout {
+    // Every record is tallied as it comes and dropped: memory stays flat however
+    // large the dataset.
+    let mut tally = summary::Tally::new(&body_names);
+    let mut made = 0usize;
+    let mut index = None;
+    let (resumed, jobs) = match opts.layout {
         Layout::Folders => {
-            let existing = store::scan(&opts.out, &settings, n, wanted).map_err(CliError::Input)?;
+            let existing = if discard {
+                store::Existing { finished: Vec::new(), removed_temps: 0 }
+            } else {
+                store::scan(&opts.out, &settings, n, wanted, |r| tally.add(&r)).map_err(CliError::Input)?
+            };
             if existing.removed_temps > 0 {
                 eprintln!("removed {} unfinished sample folder(s) of an interrupted run", existing.removed_temps);
             }
-            let finished: HashSet<u64> = existing.finished.iter().map(|r| r.index).collect();
+            let finished = existing.finished;
             // Indices of this shard: shard_i, shard_i + K, ... below n.
             let slots = if shard_i < n { (n - shard_i).div_ceil(shard_k) } else { 0 };
             let todo = slots - finished.len() as u64;
@@ -262,24 +276,41 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
                 eprintln!("resuming: {} of {slots} samples already made", finished.len());
             }
             let jobs = opts.jobs.min(todo.max(1) as usize);
-            let index_of = |slot: u64| Some(shard_i + slot * shard_k).filter(|i| !finished.contains(i));
-            let work = |arena: &mut Arena, index: u64| store::make(&opts.out, &settings, arena, index);
-            let mut made = Vec::new();
+            let index_of = |slot: u64| Some(shard_i + slot * shard_k).filter(|i| finished.binary_search(i).is_err());
+            let work = |arena: &mut Arena, index: u64| match discard {
+                true => store::draw(&settings, arena, index).map(|(record, _files)| record),
+                false => store::make(&opts.out, &settings, arena, index),
+            };
             let collect = |record: Record| {
-                made.push(record);
+                tally.add(&record);
+                made += 1;
                 Ok(())
             };
             pool(jobs, 16 * jobs, slots, todo, index_of, work, collect, report.take())?;
-            (made, existing.finished, jobs)
+            (finished.len(), jobs)
         }
         Layout::Shards(size) => {
             let count = n.div_ceil(size);
             let wanted_shard = |k: u64| k % shard_k == shard_i;
-            let existing = shards::scan(&opts.out, &settings, n, size, wanted_shard).map_err(CliError::Input)?;
+            let mut writer = match discard {
+                true => None,
+                false => Some(shards::IndexWriter::new(&opts.out, &shards::index_file_name(opts.shard)).map_err(CliError::Failed)?),
+            };
+            let mut resumed = 0;
+            let existing = match &mut writer {
+                None => shards::Existing { done: Vec::new(), missing: Vec::new(), removed_temps: 0 },
+                Some(writer) => {
+                    let on_shard = |k: u64, records: &[Record], lines: &str| {
+                        records.iter().for_each(|r| tally.add(r));
+                        resumed += records.len();
+                        writer.add(k, lines)
+                    };
+                    shards::scan(&opts.out, &settings, n, size, wanted_shard, on_shard).map_err(CliError::Input)?
+                }
+            };
             if existing.removed_temps > 0 {
                 eprintln!("removed {} unfinished shard(s) of an interrupted run", existing.removed_temps);
             }
-            let mut finished = existing.records;
             // Samples absent from a finished shard had every design rejected; their
             // records are drawn again (and a shard missing an accepted sample is not ours).
             let mut arena = Arena::new();
@@ -292,9 +323,9 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
                         sample_name(index)
                     )));
                 }
-                finished.push(record);
+                tally.add(&record);
+                resumed += 1;
             }
-            finished.sort_by_key(|r| r.index);
             let todo_shards: Vec<u64> = (0..count).filter(|&k| wanted_shard(k) && existing.done.binary_search(&k).is_err()).collect();
             let todo: u64 = todo_shards.iter().map(|&k| shards::range(k, size, n).count() as u64).sum();
             if !existing.done.is_empty() {
@@ -306,29 +337,28 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
             let work = |arena: &mut Arena, index: u64| store::draw(&settings, arena, index);
             // Shards in progress, each written as its samples come in.
             let mut writers: BTreeMap<u64, shards::ShardWriter> = BTreeMap::new();
-            let mut made = Vec::new();
-            let out = &opts.out;
+            let out = (!discard).then_some(opts.out.as_path());
             let collect = |(record, files): (Record, Option<store::Files>)| {
                 let k = record.index / size;
-                let writer = writers.entry(k).or_insert_with(|| shards::ShardWriter::new(out, k, shards::range(k, size, n)));
-                if writer.add(record.index, files)? {
+                let shard = writers.entry(k).or_insert_with(|| shards::ShardWriter::new(out, k, shards::range(k, size, n)));
+                if let Some(lines) = shard.add(&record, files)? {
                     writers.remove(&k);
+                    if let Some(writer) = &mut writer {
+                        writer.add(k, &lines)?;
+                    }
                 }
-                made.push(record);
+                tally.add(&record);
+                made += 1;
                 Ok(())
             };
             // Finished samples wait in memory with their files: a few megabytes each with meshes.
             let queue = if opts.formats.mesh { jobs } else { 16 * jobs };
             pool(jobs, queue, slots, todo, index_of, work, collect, report.take())?;
-            (made, finished, jobs)
+            index = writer;
+            (resumed, jobs)
         }
     };
     let seconds = start.elapsed().as_secs_f64();
-    let n_made = made.len();
-    let mut records = existing;
-    let resumed = records.len();
-    records.extend(made);
-    records.sort_by_key(|r| r.index);
     let about = summary::About {
         seed: opts.seed,
         n,
@@ -337,35 +367,36 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
         bodies: body_names,
         formats: opts.formats.names(),
         seconds,
-        made: n_made,
+        made,
         resumed,
         jobs,
     };
     let props = opts.out.join(summary::file_name(opts.shard));
-    let mut set = OutputSet::default();
-    set.add(&summary::file_name(opts.shard), summary::properties(&about, &records));
-    if let Layout::Shards(size) = opts.layout {
-        set.add(&shards::index_file_name(opts.shard), records.iter().filter_map(|r| shards::index_line(r, size)).collect::<String>());
+    let summary_at = if discard { "none written (--out /dev/null)".to_string() } else { format!("summary in {}", props.display()) };
+    if let Some(index) = index {
+        index.finish().map_err(CliError::Failed)?;
     }
-    set.write_files_into(&opts.out).map_err(|e| CliError::Failed(format!("cannot write {}: {e}", props.display())))?;
+    if !discard {
+        let mut set = OutputSet::default();
+        set.add(&summary::file_name(opts.shard), tally.properties(&about));
+        set.write_files_into(&opts.out).map_err(|e| CliError::Failed(format!("cannot write {}: {e}", props.display())))?;
+    }
 
-    let failed: Vec<String> = records.iter().filter(|r| r.accepted.is_none()).map(|r| sample_name(r.index)).collect();
-    let rejected: usize = records.iter().map(|r| r.rejections.len()).sum();
-    let rate = if seconds > 0.0 { n_made as f64 / seconds } else { 0.0 };
+    let failed = tally.failed();
+    let rate = if seconds > 0.0 { made as f64 / seconds } else { 0.0 };
     eprintln!(
-        "{}: {} samples ({n_made} made in {seconds:.2} s, {rate:.0}/s; {resumed} already there); {rejected} designs rejected and drawn again; summary in {}",
+        "{}: {} samples ({made} made in {seconds:.2} s, {rate:.0}/s; {resumed} already there); {} designs rejected and drawn again; {summary_at}",
         opts.out.display(),
-        records.len() - failed.len(),
-        props.display()
+        tally.samples(),
+        tally.rejected(),
     );
     if !failed.is_empty() {
         let shown: Vec<&str> = failed.iter().take(10).map(String::as_str).collect();
         return Err(CliError::Failed(format!(
-            "{} sample(s) had every one of {MAX_ATTEMPTS} designs rejected: {}{} (see {})",
+            "{} sample(s) had every one of {MAX_ATTEMPTS} designs rejected: {}{} ({summary_at})",
             failed.len(),
             shown.join(", "),
             if failed.len() > shown.len() { ", ..." } else { "" },
-            props.display()
         )));
     }
     Ok(0)

@@ -166,36 +166,44 @@ pub fn range(k: u64, size: u64, n: u64) -> std::ops::Range<u64> {
 /// A shard being written: each sample's members are appended to a temporary file in
 /// index order as the samples finish (one that finishes early waits in memory), and
 /// the file is renamed whole once the shard's last sample is in. Memory holds a few
-/// samples, not the shard; the bytes are those of [`tar`] over the shard's samples.
+/// samples and the shard's index lines, not the shard; the bytes are those of
+/// [`tar`] over the shard's samples.
 pub struct ShardWriter {
+    k: u64,
     range: std::ops::Range<u64>,
     next: u64,
-    waiting: BTreeMap<u64, Option<Files>>,
-    file: Option<io::BufWriter<fs::File>>,
-    tmp: PathBuf,
-    target: PathBuf,
+    waiting: BTreeMap<u64, (Option<String>, Option<Files>)>,
+    /// Index lines of the samples written, in index order.
+    lines: String,
+    file: Option<Box<dyn Write>>,
+    /// `None`: the bytes are made and discarded (`--out /dev/null`).
+    paths: Option<(PathBuf, PathBuf)>,
 }
 
 impl ShardWriter {
-    /// Shard `k` of `dir`, holding the samples of `range`.
-    pub fn new(dir: &Path, k: u64, range: std::ops::Range<u64>) -> ShardWriter {
+    /// Shard `k` of `dir` (`None`: discarded as it is made), holding the samples of `range`.
+    pub fn new(dir: Option<&Path>, k: u64, range: std::ops::Range<u64>) -> ShardWriter {
         let next = range.start;
-        ShardWriter { range, next, waiting: BTreeMap::new(), file: None, tmp: dir.join(tmp_name(k)), target: dir.join(shard_name(k)) }
+        let paths = dir.map(|dir| (dir.join(tmp_name(k)), dir.join(shard_name(k))));
+        ShardWriter { k, range, next, waiting: BTreeMap::new(), lines: String::new(), file: None, paths }
     }
 
-    /// Takes sample `index`'s files (`None`: every design was rejected, no files);
-    /// returns whether the shard is complete (written and renamed).
-    pub fn add(&mut self, index: u64, files: Option<Files>) -> Result<bool, String> {
-        self.waiting.insert(index, files);
+    /// Takes a sample's record and files (`None`: every design was rejected, no
+    /// files); once the shard is complete (written and renamed), returns its index
+    /// lines.
+    pub fn add(&mut self, record: &Record, files: Option<Files>) -> Result<Option<String>, String> {
+        self.waiting.insert(record.index, (index_line(record, self.k), files));
         self.write_ready().map_err(|e| {
             self.file = None;
-            let _ = fs::remove_file(&self.tmp);
-            format!("cannot write {}: {e}", self.target.display())
+            let (tmp, target) = self.paths.as_ref().expect("only files fail");
+            let _ = fs::remove_file(tmp);
+            format!("cannot write {}: {e}", target.display())
         })
     }
 
-    fn write_ready(&mut self) -> io::Result<bool> {
-        while let Some(files) = self.waiting.remove(&self.next) {
+    fn write_ready(&mut self) -> io::Result<Option<String>> {
+        while let Some((line, files)) = self.waiting.remove(&self.next) {
+            self.lines.extend(line);
             if let Some(files) = files {
                 let key = sample_name(self.next);
                 let mut own: Vec<(String, &[u8])> = files.iter().map(|(f, b)| (member_name(&key, f), b.as_slice())).collect();
@@ -210,30 +218,36 @@ impl ShardWriter {
             self.next += 1;
         }
         if self.next < self.range.end {
-            return Ok(false);
+            return Ok(None);
         }
         let out = self.open()?;
         out.write_all(&[0; 2 * BLOCK])?;
-        let file = self.file.take().expect("opened").into_inner().map_err(io::IntoInnerError::into_error)?;
-        drop(file);
-        fs::rename(&self.tmp, &self.target)?;
-        Ok(true)
+        out.flush()?;
+        self.file = None;
+        if let Some((tmp, target)) = &self.paths {
+            fs::rename(tmp, target)?;
+        }
+        Ok(Some(std::mem::take(&mut self.lines)))
     }
 
-    fn open(&mut self) -> io::Result<&mut io::BufWriter<fs::File>> {
+    fn open(&mut self) -> io::Result<&mut Box<dyn Write>> {
         if self.file.is_none() {
-            self.file = Some(io::BufWriter::with_capacity(1 << 20, fs::File::create(&self.tmp)?));
+            self.file = Some(match &self.paths {
+                Some((tmp, _)) => Box::new(io::BufWriter::with_capacity(1 << 20, fs::File::create(tmp)?)),
+                None => Box::new(io::sink()),
+            });
         }
         Ok(self.file.as_mut().expect("just opened"))
     }
 }
 
-/// One line of the index: a sample's key, shard and garment.
-pub fn index_line(record: &Record, size: u64) -> Option<String> {
+/// One line of the index: a sample's key, shard `k` and garment (`None` when
+/// every design was rejected).
+fn index_line(record: &Record, k: u64) -> Option<String> {
     let a = record.accepted.as_ref()?;
     let v = serde_json::json!({
         "key": sample_name(record.index),
-        "shard": shard_name(record.index / size),
+        "shard": shard_name(k),
         "type": a.main,
         "upper": a.upper,
         "waistband": a.waistband,
@@ -253,12 +267,82 @@ pub fn index_file_name(shard: Option<(u64, u64)>) -> String {
     }
 }
 
+/// The index being written: each shard's lines are appended to a temporary parts
+/// file as the shard is complete (in any order), and [`finish`](Self::finish)
+/// writes the index in shard order from it. Memory holds a position per shard.
+pub struct IndexWriter {
+    parts: io::BufWriter<fs::File>,
+    parts_path: PathBuf,
+    /// `shard → (offset, length)` in the parts file.
+    segments: BTreeMap<u64, (u64, u64)>,
+    end: u64,
+    target: PathBuf,
+}
+
+impl IndexWriter {
+    /// The index `name` in `dir`; removes the temporaries of this index that
+    /// interrupted runs left.
+    pub fn new(dir: &Path, name: &str) -> Result<IndexWriter, String> {
+        let fail = |e: io::Error| format!("{}: cannot write the index: {e}", dir.join(name).display());
+        let stale = [format!(".{name}.parts-"), format!(".{name}.tmp-")];
+        for entry in fs::read_dir(dir).map_err(fail)? {
+            let path = entry.map_err(fail)?.path();
+            let file_name = path.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default();
+            if stale.iter().any(|p| file_name.starts_with(p.as_str())) {
+                fs::remove_file(&path).map_err(fail)?;
+            }
+        }
+        let parts_path = dir.join(format!(".{name}.parts-{}", std::process::id()));
+        let parts = io::BufWriter::new(fs::File::create(&parts_path).map_err(fail)?);
+        Ok(IndexWriter { parts, parts_path, segments: BTreeMap::new(), end: 0, target: dir.join(name) })
+    }
+
+    /// The lines of shard `k`.
+    pub fn add(&mut self, k: u64, lines: &str) -> Result<(), String> {
+        self.parts.write_all(lines.as_bytes()).map_err(|e| format!("cannot write {}: {e}", self.parts_path.display()))?;
+        self.segments.insert(k, (self.end, lines.len() as u64));
+        self.end += lines.len() as u64;
+        Ok(())
+    }
+
+    /// Write the index (to a temporary name, renamed whole).
+    pub fn finish(mut self) -> Result<(), String> {
+        use std::io::{Read, Seek};
+        let fail = |e: io::Error| format!("cannot write {}: {e}", self.target.display());
+        self.parts.flush().map_err(fail)?;
+        let mut parts = fs::File::open(&self.parts_path).map_err(fail)?;
+        let tmp = self.target.with_file_name(format!(
+            ".{}.tmp-{}",
+            self.target.file_name().expect("a file name").to_string_lossy(),
+            std::process::id()
+        ));
+        let mut write = || -> io::Result<()> {
+            let mut out = io::BufWriter::new(fs::File::create(&tmp)?);
+            for &(offset, len) in self.segments.values() {
+                parts.seek(io::SeekFrom::Start(offset))?;
+                io::copy(&mut (&mut parts).take(len), &mut out)?;
+            }
+            out.into_inner().map_err(io::IntoInnerError::into_error)?.sync_all()?;
+            fs::rename(&tmp, &self.target)
+        };
+        let result = write();
+        if result.is_err() {
+            let _ = fs::remove_file(&tmp);
+        }
+        result.map_err(fail)
+    }
+}
+
+impl Drop for IndexWriter {
+    fn drop(&mut self) {
+        let _ = fs::remove_file(&self.parts_path);
+    }
+}
+
 /// What a dataset folder already holds for the shards of this run.
 pub struct Existing {
     /// Finished shards.
     pub done: Vec<u64>,
-    /// Records of the accepted samples of finished shards.
-    pub records: Vec<Record>,
     /// Indices of finished shards that have no sample (every attempt rejected).
     pub missing: Vec<u64>,
     /// Stale temporary shards removed.
@@ -266,16 +350,26 @@ pub struct Existing {
 }
 
 /// Scan `dir`: check each finished shard of this run (`wanted`, below `shards`)
-/// belongs to this dataset, read its records, and remove stale temporaries.
-pub fn scan(dir: &Path, s: &Settings, n: u64, size: u64, wanted: impl Fn(u64) -> bool) -> Result<Existing, String> {
+/// belongs to this dataset, hand its records (by index) and index lines to
+/// `on_shard`, and remove stale temporaries.
+pub fn scan(
+    dir: &Path,
+    s: &Settings,
+    n: u64,
+    size: u64,
+    wanted: impl Fn(u64) -> bool,
+    mut on_shard: impl FnMut(u64, &[Record], &str) -> Result<(), String>,
+) -> Result<Existing, String> {
     let shards = n.div_ceil(size);
-    let mut existing = Existing { done: Vec::new(), records: Vec::new(), missing: Vec::new(), removed_temps: 0 };
+    let mut existing = Existing { done: Vec::new(), missing: Vec::new(), removed_temps: 0 };
     let store::Listing { items, stale } = store::list(dir, shard_of, shards, &wanted)?;
     for (k, _, path) in items {
-        let records = check_shard(&path, s, range(k, size, n))?;
-        let have: std::collections::HashSet<u64> = records.iter().map(|r| r.index).collect();
-        existing.missing.extend(range(k, size, n).filter(|i| !have.contains(i)));
-        existing.records.extend(records);
+        let mut records = check_shard(&path, s, range(k, size, n))?;
+        records.sort_by_key(|r| r.index);
+        let mut have = records.iter().map(|r| r.index).peekable();
+        existing.missing.extend(range(k, size, n).filter(|i| have.next_if_eq(i).is_none()));
+        let lines: String = records.iter().filter_map(|r| index_line(r, k)).collect();
+        on_shard(k, &records, &lines)?;
         existing.done.push(k);
     }
     for t in stale {
@@ -283,7 +377,7 @@ pub fn scan(dir: &Path, s: &Settings, n: u64, size: u64, wanted: impl Fn(u64) ->
         existing.removed_temps += 1;
     }
     existing.done.sort_unstable();
-    existing.records.sort_by_key(|r| r.index);
+    existing.missing.sort_unstable();
     Ok(existing)
 }
 
@@ -387,6 +481,33 @@ mod tests {
     }
 
     #[test]
+    fn the_index_is_in_shard_order_whatever_order_shards_finish_in() {
+        let dir = std::env::temp_dir().join(format!("garmentcode-index-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        fs::create_dir_all(&dir).unwrap();
+        // Left by an interrupted run; another index's temporaries are not ours.
+        fs::write(dir.join(".index.jsonl.parts-1"), "stale").unwrap();
+        fs::write(dir.join(".index.jsonl.tmp-1"), "stale").unwrap();
+        fs::write(dir.join(".index_shard_0_of_2.jsonl.parts-1"), "other").unwrap();
+        let mut w = IndexWriter::new(&dir, "index.jsonl").unwrap();
+        w.add(3, "d\n").unwrap();
+        w.add(0, "a\nb\n").unwrap();
+        w.add(7, "").unwrap();
+        w.add(1, "c\n").unwrap();
+        w.finish().unwrap();
+        assert_eq!(fs::read_to_string(dir.join("index.jsonl")).unwrap(), "a\nb\nc\nd\n");
+        let mut left: Vec<String> = fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        left.sort();
+        assert_eq!(left, [".index_shard_0_of_2.jsonl.parts-1", "index.jsonl"]);
+        // A run stopped by an error leaves no parts file.
+        let mut w = IndexWriter::new(&dir, "index.jsonl").unwrap();
+        w.add(0, "x\n").unwrap();
+        drop(w);
+        assert_eq!(fs::read_dir(&dir).unwrap().count(), 2);
+        let _ = fs::remove_dir_all(&dir);
+    }
+
+    #[test]
     fn a_streamed_shard_is_the_archive_of_its_samples_whatever_their_order() {
         let dir = std::env::temp_dir().join(format!("garmentcode-shardwriter-{}", std::process::id()));
         let _ = fs::remove_dir_all(&dir);
@@ -395,13 +516,31 @@ mod tests {
             let key = sample_name(i);
             vec![(format!("{key}_specification.json"), vec![b'{'; 700 + i as usize]), ("sample_info.json".into(), vec![b'x'; 3])]
         };
-        let mut w = ShardWriter::new(&dir, 2, 20..24);
+        let record = |i: u64, accepted: bool| Record {
+            index: i,
+            accepted: accepted.then(|| store::Accepted {
+                attempt: 0,
+                body: "mean_all".into(),
+                upper: "Shirt".into(),
+                waistband: "none".into(),
+                bottom: "none".into(),
+                main: "upper_garment".into(),
+                styles: vec![],
+                panels: 4,
+            }),
+            rejections: vec![],
+        };
+        let mut w = ShardWriter::new(Some(&dir), 2, 20..24);
         // 22 finishes first, 21 had every design rejected.
-        assert!(!w.add(22, Some(files(22))).unwrap());
-        assert!(!w.add(20, Some(files(20))).unwrap());
+        assert_eq!(w.add(&record(22, true), Some(files(22))).unwrap(), None);
+        assert_eq!(w.add(&record(20, true), Some(files(20))).unwrap(), None);
         assert!(!dir.join(shard_name(2)).exists(), "renamed before the last sample");
-        assert!(!w.add(23, Some(files(23))).unwrap());
-        assert!(w.add(21, None).unwrap());
+        assert_eq!(w.add(&record(23, true), Some(files(23))).unwrap(), None);
+        let lines = w.add(&record(21, false), None).unwrap().expect("the shard is complete");
+        let keys: Vec<String> =
+            lines.lines().map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap()["key"].as_str().unwrap().to_string()).collect();
+        assert_eq!(keys, ["rand_0000020", "rand_0000022", "rand_0000023"]);
+        assert!(lines.lines().all(|l| l.contains("\"shard\":\"shard-000002.tar\"")));
         let written = fs::read(dir.join(shard_name(2))).unwrap();
         let mut members: Vec<(String, Vec<u8>)> = Vec::new();
         for i in [20, 22, 23] {

@@ -382,17 +382,18 @@ pub fn index_of(name: &str) -> Option<u64> {
 
 /// What a dataset folder already holds for the indices of this run.
 pub struct Existing {
-    /// Records of finished samples (of the wanted indices), by index.
-    pub finished: Vec<Record>,
+    /// Indices of finished samples (of the wanted indices), sorted.
+    pub finished: Vec<u64>,
     /// Stale temporary folders removed.
     pub removed_temps: usize,
 }
 
 /// Scan `dir`: remove stale temporaries of the wanted indices (left by an
 /// interrupted run) and read the records of finished samples, checking they
-/// belong to this dataset and have every requested file. `wanted` says whether an
-/// index belongs to this run (its shard).
-pub fn scan(dir: &Path, s: &Settings, n: u64, wanted: impl Fn(u64) -> bool) -> Result<Existing, String> {
+/// belong to this dataset and have every requested file; each record is handed to
+/// `on_record` (in no particular order). `wanted` says whether an index belongs to
+/// this run (its shard).
+pub fn scan(dir: &Path, s: &Settings, n: u64, wanted: impl Fn(u64) -> bool, mut on_record: impl FnMut(Record)) -> Result<Existing, String> {
     let mut finished = Vec::new();
     let mut removed_temps = 0;
     let Listing { items, stale } = list(dir, index_of, n, &wanted)?;
@@ -410,13 +411,14 @@ pub fn scan(dir: &Path, s: &Settings, n: u64, wanted: impl Fn(u64) -> bool) -> R
                 ));
             }
         }
-        finished.push(record);
+        on_record(record);
+        finished.push(index);
     }
     // Checked above, removed only now: a folder with foreign samples is left untouched.
     for t in stale {
         fs::remove_dir_all(&t).map_err(|e| format!("{}: cannot remove a stale temporary folder: {e}", t.display()))?;
         removed_temps += 1;
     }
-    finished.sort_by_key(|r| r.index);
+    finished.sort_unstable();
     Ok(Existing { finished, removed_temps })
 }

@@ -3,7 +3,7 @@
 //! run went. Everything but the final `run:` section depends on the dataset alone,
 //! so it is the same for any number of threads, and after a resume.
 
-use super::store::Record;
+use super::store::{Record, RejectionRecord};
 use garmentcode::Choice;
 use garmentcode::parity::yaml::{self, Node, Value as Y};
 use garments::design::{BottomKind, UpperKind, WaistbandKind};
@@ -48,97 +48,202 @@ fn seq(items: Vec<Node>) -> Node {
     Node::new(Y::Seq(items))
 }
 
-/// Counts of `names` (in that order), then any other value seen, in order of
-/// first appearance.
-fn counts<'r>(names: &[&str], values: impl Iterator<Item = &'r str>) -> Node {
-    let mut out: Vec<(String, u64)> = names.iter().map(|n| (n.to_string(), 0)).collect();
-    for v in values {
-        match out.iter_mut().find(|(n, _)| n == v) {
-            Some(slot) => slot.1 += 1,
-            None => out.push((v.to_string(), 1)),
-        }
-    }
-    Node::new(Y::Map(out.into_iter().map(|(k, c)| (s(&k), int(c))).collect()))
+/// Counts of named values: `names` first (in that order, zero when unseen), then
+/// any other value in order of the first sample index it was seen at, so that the
+/// order does not depend on the order samples come in.
+struct Counts {
+    /// `(value, count, first index)`: the named values, then the others.
+    items: Vec<(String, u64, u64)>,
+    named: usize,
 }
 
-/// The text of `dataset_properties.yaml` for `records` (sorted by index).
-pub fn properties(about: &About, records: &[Record]) -> String {
-    let accepted: Vec<_> = records.iter().filter_map(|r| r.accepted.as_ref()).collect();
-    let failed: Vec<Node> = records.iter().filter(|r| r.accepted.is_none()).map(|r| s(&sample_name(r.index))).collect();
-    let with_none = |names: &[&'static str]| names.iter().copied().chain(["none"]).collect::<Vec<_>>();
+impl Counts {
+    fn new(names: &[&str]) -> Counts {
+        Counts { items: names.iter().map(|n| (n.to_string(), 0, 0)).collect(), named: names.len() }
+    }
 
-    let types = map(vec![
-        ("upper", counts(&with_none(UpperKind::NAMES), accepted.iter().map(|a| a.upper.as_str()))),
-        ("waistband", counts(&with_none(WaistbandKind::NAMES), accepted.iter().map(|a| a.waistband.as_str()))),
-        ("bottom", counts(&with_none(BottomKind::NAMES), accepted.iter().map(|a| a.bottom.as_str()))),
-        ("main", counts(MAIN_TYPES, accepted.iter().map(|a| a.main.as_str()))),
-        ("style", counts(STYLES, accepted.iter().flat_map(|a| a.styles.iter().map(String::as_str)))),
-    ]);
+    fn add(&mut self, value: &str, index: u64) {
+        match self.items.iter_mut().find(|(n, ..)| n == value) {
+            Some(slot) => {
+                slot.1 += 1;
+                slot.2 = slot.2.min(index);
+            }
+            None => self.items.push((value.to_string(), 1, index)),
+        }
+    }
 
-    let all_rejections = || records.iter().flat_map(|r| r.rejections.iter().map(move |x| (r.index, x)));
-    let keys: Vec<&str> = Reason::ALL.iter().map(|r| r.key()).collect();
-    let by_reason = counts(&keys, all_rejections().map(|(_, x)| x.reason.key()));
-    let examples = Reason::ALL
-        .iter()
-        .filter_map(|reason| {
-            let list: Vec<Node> = all_rejections()
-                .filter(|(_, x)| x.reason == *reason)
-                .take(EXAMPLES)
-                .map(|(index, x)| {
-                    map(vec![
-                        ("sample", s(&sample_name(index))),
-                        ("index", int(index)),
-                        ("attempt", int(u64::from(x.attempt))),
-                        ("body", s(&x.body)),
-                        ("message", s(&x.message)),
-                    ])
-                })
-                .collect();
-            (!list.is_empty()).then(|| (reason.key(), seq(list)))
-        })
-        .collect();
-    let rejections = map(vec![
-        ("total", int(all_rejections().count() as u64)),
-        ("by_reason", by_reason),
-        ("examples", map(examples)),
-        (
-            "inspect",
-            s(
-                "garmentcode sample --seed SEED --replay INDEX:ATTEMPT --out DIR (with the same --design-space and --bodies) rebuilds one attempt",
+    fn node(&self) -> Node {
+        let mut others: Vec<&(String, u64, u64)> = self.items[self.named..].iter().collect();
+        others.sort_by_key(|(_, _, first)| *first);
+        let all = self.items[..self.named].iter().chain(others);
+        Node::new(Y::Map(all.map(|(k, c, _)| (s(k), int(*c))).collect()))
+    }
+}
+
+/// A tally of sample records (the whole of `dataset_properties.yaml` but the
+/// run's figures), taken as records come in, in any order: its size depends on
+/// the number of distinct values, the failed samples and [`EXAMPLES`], not on the
+/// number of samples, so a run of millions keeps a flat memory.
+pub struct Tally {
+    upper: Counts,
+    waistband: Counts,
+    bottom: Counts,
+    main: Counts,
+    style: Counts,
+    bodies: Counts,
+    reasons: Counts,
+    samples: u64,
+    rejected: u64,
+    /// Indices of samples with every attempt rejected.
+    failed: Vec<u64>,
+    /// Per reason of [`Reason::ALL`], the first [`EXAMPLES`] rejections by (index, attempt).
+    examples: Vec<Vec<(u64, RejectionRecord)>>,
+}
+
+impl Tally {
+    /// An empty tally for a dataset of these bodies.
+    pub fn new(bodies: &[String]) -> Tally {
+        let with_none = |names: &[&'static str]| names.iter().copied().chain(["none"]).collect::<Vec<_>>();
+        let keys: Vec<&str> = Reason::ALL.iter().map(|r| r.key()).collect();
+        Tally {
+            upper: Counts::new(&with_none(UpperKind::NAMES)),
+            waistband: Counts::new(&with_none(WaistbandKind::NAMES)),
+            bottom: Counts::new(&with_none(BottomKind::NAMES)),
+            main: Counts::new(MAIN_TYPES),
+            style: Counts::new(STYLES),
+            bodies: Counts::new(&bodies.iter().map(String::as_str).collect::<Vec<_>>()),
+            reasons: Counts::new(&keys),
+            samples: 0,
+            rejected: 0,
+            failed: Vec::new(),
+            examples: vec![Vec::new(); Reason::ALL.len()],
+        }
+    }
+
+    /// Count one sample's record.
+    pub fn add(&mut self, r: &Record) {
+        let i = r.index;
+        match &r.accepted {
+            Some(a) => {
+                self.samples += 1;
+                self.upper.add(&a.upper, i);
+                self.waistband.add(&a.waistband, i);
+                self.bottom.add(&a.bottom, i);
+                self.main.add(&a.main, i);
+                for style in &a.styles {
+                    self.style.add(style, i);
+                }
+                self.bodies.add(&a.body, i);
+            }
+            None => self.failed.push(i),
+        }
+        for x in &r.rejections {
+            self.rejected += 1;
+            self.reasons.add(x.reason.key(), i);
+            let slot = Reason::ALL.iter().position(|reason| *reason == x.reason).expect("every reason is listed");
+            let list = &mut self.examples[slot];
+            let key = (i, x.attempt);
+            if list.len() < EXAMPLES || list.last().is_some_and(|(j, y)| key < (*j, y.attempt)) {
+                let at = list.partition_point(|(j, y)| (*j, y.attempt) < key);
+                list.insert(at, (i, x.clone()));
+                list.truncate(EXAMPLES);
+            }
+        }
+    }
+
+    /// Accepted samples.
+    pub fn samples(&self) -> u64 {
+        self.samples
+    }
+
+    /// Rejected designs (drawn again).
+    pub fn rejected(&self) -> u64 {
+        self.rejected
+    }
+
+    /// Names of the samples with every attempt rejected, by index.
+    pub fn failed(&self) -> Vec<String> {
+        let mut failed = self.failed.clone();
+        failed.sort_unstable();
+        failed.into_iter().map(sample_name).collect()
+    }
+
+    /// The text of `dataset_properties.yaml`.
+    pub fn properties(&self, about: &About) -> String {
+        let failed: Vec<Node> = self.failed().iter().map(|n| s(n)).collect();
+        let types = map(vec![
+            ("upper", self.upper.node()),
+            ("waistband", self.waistband.node()),
+            ("bottom", self.bottom.node()),
+            ("main", self.main.node()),
+            ("style", self.style.node()),
+        ]);
+        let examples = Reason::ALL
+            .iter()
+            .zip(&self.examples)
+            .filter(|(_, list)| !list.is_empty())
+            .map(|(reason, list)| {
+                let list = list
+                    .iter()
+                    .map(|(index, x)| {
+                        map(vec![
+                            ("sample", s(&sample_name(*index))),
+                            ("index", int(*index)),
+                            ("attempt", int(u64::from(x.attempt))),
+                            ("body", s(&x.body)),
+                            ("message", s(&x.message)),
+                        ])
+                    })
+                    .collect();
+                (reason.key(), seq(list))
+            })
+            .collect();
+        let rejections = map(vec![
+            ("total", int(self.rejected)),
+            ("by_reason", self.reasons.node()),
+            ("examples", map(examples)),
+            (
+                "inspect",
+                s(
+                    "garmentcode sample --seed SEED --replay INDEX:ATTEMPT --out DIR (with the same --design-space and --bodies) rebuilds one attempt",
+                ),
             ),
-        ),
-    ]);
+        ]);
 
-    let mut top =
-        vec![("generator", s(&format!("garmentcode {}", env!("CARGO_PKG_VERSION")))), ("seed", int(about.seed)), ("count", int(about.n))];
-    if let Some((i, k)) = about.shard {
-        top.push(("shard", s(&format!("{i}/{k}"))));
+        let mut top = vec![
+            ("generator", s(&format!("garmentcode {}", env!("CARGO_PKG_VERSION")))),
+            ("seed", int(about.seed)),
+            ("count", int(about.n)),
+        ];
+        if let Some((i, k)) = about.shard {
+            top.push(("shard", s(&format!("{i}/{k}"))));
+        }
+        top.extend([
+            ("design_space", s(about.design_space)),
+            ("bodies", seq(about.bodies.iter().map(|b| s(b)).collect())),
+            ("formats", seq(about.formats.iter().map(|f| s(f)).collect())),
+            ("samples", int(self.samples)),
+            ("failed", int(failed.len() as u64)),
+        ]);
+        if !failed.is_empty() {
+            top.push(("failed_samples", seq(failed)));
+        }
+        top.extend([
+            ("garment_types", types),
+            ("bodies_used", self.bodies.node()),
+            ("rejections", rejections),
+            (
+                "run",
+                map(vec![
+                    ("time_seconds", Node::new(Y::Float((about.seconds * 1000.0).round() / 1000.0))),
+                    ("made", int(about.made as u64)),
+                    ("resumed", int(about.resumed as u64)),
+                    ("jobs", int(about.jobs as u64)),
+                ]),
+            ),
+        ]);
+        yaml::to_string(&map(top))
     }
-    top.extend([
-        ("design_space", s(about.design_space)),
-        ("bodies", seq(about.bodies.iter().map(|b| s(b)).collect())),
-        ("formats", seq(about.formats.iter().map(|f| s(f)).collect())),
-        ("samples", int(accepted.len() as u64)),
-        ("failed", int(failed.len() as u64)),
-    ]);
-    if !failed.is_empty() {
-        top.push(("failed_samples", seq(failed)));
-    }
-    top.extend([
-        ("garment_types", types),
-        ("bodies_used", counts(&about.bodies.iter().map(String::as_str).collect::<Vec<_>>(), accepted.iter().map(|a| a.body.as_str()))),
-        ("rejections", rejections),
-        (
-            "run",
-            map(vec![
-                ("time_seconds", Node::new(Y::Float((about.seconds * 1000.0).round() / 1000.0))),
-                ("made", int(about.made as u64)),
-                ("resumed", int(about.resumed as u64)),
-                ("jobs", int(about.jobs as u64)),
-            ]),
-        ),
-    ]);
-    yaml::to_string(&map(top))
 }
 
 /// The file name: one per shard, so shards sharing a folder do not overwrite each
@@ -147,5 +252,95 @@ pub fn file_name(shard: Option<(u64, u64)>) -> String {
     match shard {
         None => "dataset_properties.yaml".into(),
         Some((i, k)) => format!("dataset_properties_shard_{i}_of_{k}.yaml"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::commands::sample::store::Accepted;
+
+    /// Records with a mix of accepted, failed and rejected samples, and a style
+    /// and a garment type the summary does not name.
+    fn records() -> Vec<Record> {
+        (0..60u64)
+            .map(|i| {
+                let rejections = (0..(i % 3) as u32)
+                    .map(|attempt| RejectionRecord {
+                        attempt,
+                        body: "mean_all".into(),
+                        reason: Reason::ALL[(i as usize + attempt as usize) % 2 * 3],
+                        message: format!("sample {i} attempt {attempt}"),
+                    })
+                    .collect();
+                let accepted = (i % 7 != 3).then(|| Accepted {
+                    attempt: (i % 3) as u32,
+                    body: if i % 2 == 0 { "mean_all" } else { "f_smpl" }.into(),
+                    upper: if i % 5 == 0 { "none" } else { "Shirt" }.into(),
+                    waistband: "none".into(),
+                    bottom: if i % 4 == 0 { "Pants" } else { "none" }.into(),
+                    main: if i == 41 { "cape" } else { "upper_garment" }.into(),
+                    styles: if i > 30 { vec!["long_sleeve".into(), format!("odd_{}", i % 2)] } else { vec![] },
+                    panels: 4,
+                });
+                Record { index: i, accepted, rejections }
+            })
+            .collect()
+    }
+
+    fn text(records: &[Record]) -> String {
+        let bodies = vec!["mean_all".to_string(), "f_smpl".to_string()];
+        let mut tally = Tally::new(&bodies);
+        records.iter().for_each(|r| tally.add(r));
+        let about = About {
+            seed: 1,
+            n: 60,
+            shard: None,
+            design_space: "built-in",
+            bodies,
+            formats: vec!["json"],
+            seconds: 1.0,
+            made: 60,
+            resumed: 0,
+            jobs: 2,
+        };
+        tally.properties(&about)
+    }
+
+    #[test]
+    fn the_summary_does_not_depend_on_the_order_records_come_in() {
+        let mut shuffled = records();
+        let sorted = text(&shuffled);
+        shuffled.reverse();
+        shuffled.swap(3, 40);
+        assert_eq!(text(&shuffled), sorted);
+        // Other values in order of the first sample they appear in.
+        assert!(sorted.contains("  style:\n"), "{sorted}");
+        let odd_0 = sorted.find("odd_0").unwrap();
+        let odd_1 = sorted.find("odd_1").unwrap();
+        assert!(odd_0 < odd_1, "odd_0 (first at sample 32; 31 failed) before odd_1 (33)");
+        assert!(sorted.contains("cape: 1"));
+    }
+
+    #[test]
+    fn rejection_examples_are_the_first_by_index_and_attempt() {
+        let all = records();
+        let t = text(&all);
+        let first = Reason::ALL[0];
+        let expected: Vec<String> = all
+            .iter()
+            .flat_map(|r| r.rejections.iter().map(move |x| (r.index, x)))
+            .filter(|(_, x)| x.reason == first)
+            .take(EXAMPLES)
+            .map(|(_, x)| x.message.clone())
+            .collect();
+        assert_eq!(expected.len(), EXAMPLES);
+        let section = &t[t.find(&format!("    {}:\n", first.key())).unwrap()..];
+        let shown: Vec<&str> = section.lines().filter_map(|l| l.trim().strip_prefix("message: ")).take(EXAMPLES).collect();
+        assert_eq!(shown, expected);
+        let total: usize = all.iter().map(|r| r.rejections.len()).sum();
+        assert!(t.contains(&format!("  total: {total}\n")));
+        let failed = all.iter().filter(|r| r.accepted.is_none()).count();
+        assert!(t.contains(&format!("failed: {failed}\n")));
     }
 }
