@@ -9,7 +9,11 @@
 //! - `cli_mesh`: the command with `--formats json,mesh --layout shards` (every sample's
 //!   simulation box mesh too), with `--jobs` 2;
 //! - after divan's table: where one thread's time goes per sample with meshes (drawing
-//!   and building the design, the mesh, the mesh's files), the share of meshing.
+//!   and building the design, the mesh, the mesh's files), the share of meshing;
+//! - then `sample --layout shards --formats json --jobs 2` into a folder on disk
+//!   against the same run with `--out /dev/null` (every file made, then discarded:
+//!   the CPU floor), in alternating rounds: the median samples/s of each and their
+//!   ratio.
 //!
 //! `cargo bench --bench sample`; the command writes under `$GARMENTCODE_BENCH_DIR`
 //! (default: the temporary directory), so the disk can be chosen.
@@ -29,6 +33,58 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 fn main() {
     divan::main();
     mesh_share();
+    shards_against_sink();
+}
+
+/// Samples per run of the disk-against-sink comparison, and its rounds.
+const SINK_SAMPLES: u64 = 20_000;
+const SINK_ROUNDS: usize = 5;
+
+/// Prints the speed of writing shards to disk against discarding them.
+fn shards_against_sink() {
+    let args = ["--layout", "shards", "--formats", "json"];
+    let speed = |out: &std::path::Path| {
+        let start = std::time::Instant::now();
+        let status = sample_command(SINK_SAMPLES, 2, &args, out).status().expect("garmentcode runs");
+        assert!(status.success());
+        SINK_SAMPLES as f64 / start.elapsed().as_secs_f64()
+    };
+    let (mut disk, mut sink) = (Vec::new(), Vec::new());
+    let root = bench_dir().join(format!("garmentcode-bench-sink-{}", std::process::id()));
+    for round in 0..SINK_ROUNDS {
+        let dir = root.join(round.to_string());
+        disk.push(speed(&dir));
+        let _ = std::fs::remove_dir_all(&root);
+        sink.push(speed(std::path::Path::new("/dev/null")));
+    }
+    let median = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let (disk, sink) = (median(&mut disk), median(&mut sink));
+    println!(
+        "sample --layout shards --formats json --jobs 2, {SINK_SAMPLES} samples, median of {SINK_ROUNDS} alternating rounds: \
+         {disk:.0} samples/s into {}, {sink:.0} samples/s into /dev/null; the disk costs {:.2}x the floor",
+        bench_dir().display(),
+        sink / disk
+    );
+}
+
+/// Where the command benchmarks write.
+fn bench_dir() -> PathBuf {
+    std::env::var_os("GARMENTCODE_BENCH_DIR").map_or_else(std::env::temp_dir, PathBuf::from)
+}
+
+/// `garmentcode sample --n n --seed SEED --jobs jobs ARGS --out out`, quiet.
+fn sample_command(n: u64, jobs: usize, args: &[&str], out: &std::path::Path) -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_garmentcode"));
+    command
+        .args(["sample", "--n", &n.to_string(), "--seed", &SEED.to_string(), "--jobs", &jobs.to_string()])
+        .args(args)
+        .arg("--out")
+        .arg(out)
+        .stderr(std::process::Stdio::null());
+    command
 }
 
 /// Prints the time per sample of one thread in the design (draw, build, JSON), the
@@ -110,8 +166,7 @@ fn cli_mesh(bencher: divan::Bencher, jobs: usize) {
 /// under `$GARMENTCODE_BENCH_DIR` (named after `tag`), removed after the run (untimed).
 fn run_command(bencher: divan::Bencher, tag: &str, n: u64, jobs: usize, args: &[&str]) {
     static RUN: AtomicUsize = AtomicUsize::new(0);
-    let base = std::env::var_os("GARMENTCODE_BENCH_DIR").map_or_else(std::env::temp_dir, PathBuf::from);
-    let root = base.join(format!("garmentcode-bench-{tag}-{}", std::process::id()));
+    let root = bench_dir().join(format!("garmentcode-bench-{tag}-{}", std::process::id()));
     bencher
         .counter(divan::counter::ItemsCount::new(n))
         .with_inputs(|| -> PathBuf {
@@ -120,14 +175,7 @@ fn run_command(bencher: divan::Bencher, tag: &str, n: u64, jobs: usize, args: &[
             dir
         })
         .bench_local_values(|dir: PathBuf| {
-            let status = Command::new(env!("CARGO_BIN_EXE_garmentcode"))
-                .args(["sample", "--n", &n.to_string(), "--seed", &SEED.to_string(), "--jobs", &jobs.to_string()])
-                .args(args)
-                .arg("--out")
-                .arg(&dir)
-                .stderr(std::process::Stdio::null())
-                .status()
-                .expect("garmentcode runs");
+            let status = sample_command(n, jobs, args, &dir).status().expect("garmentcode runs");
             assert!(status.success());
             // Removed when divan drops it, after the timing.
             Removed(dir)

@@ -351,7 +351,7 @@ pub struct SampleArgs {
     /// Seed: any whole number from 0 to 2^64-1.
     #[arg(short, long, value_name = "S", required_unless_present = "unpack")]
     pub seed: Option<u64>,
-    /// Output folder.
+    /// Output folder (/dev/null: make every sample, its files too, and discard them; nothing is written).
     #[arg(short, long, value_name = "DIR")]
     pub out: PathBuf,
     /// A design file whose ranges and probabilities replace the built-in ones.

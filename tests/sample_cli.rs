@@ -492,3 +492,22 @@ fn mesh_samples_carry_the_box_mesh_in_both_layouts() {
     let again = sample_ok(&["--n", "4", "--seed", "3", "--out", s(&sharded), "--formats", "json,mesh", "--layout", "shards:2"]);
     assert!(again.contains("0 made") || again.contains("4 already there"), "{again}");
 }
+
+#[test]
+fn samples_made_into_dev_null_are_discarded() {
+    if !Path::new("/dev/null").exists() {
+        eprintln!("skipped: this system has no /dev/null");
+        return;
+    }
+    for layout in ["folders", "shards:4"] {
+        let err = sample_ok(&["--n", "9", "--seed", "3", "--layout", layout, "--jobs", "2", "--out", "/dev/null"]);
+        assert!(err.contains("/dev/null: 9 samples (9 made"), "{layout}: {err}");
+        assert!(err.contains("none written"), "{layout}: {err}");
+    }
+    // The same tally as the run that writes.
+    let dir = scratch("dev_null");
+    let err = sample_ok(&["--n", "9", "--seed", "3", "--out", s(&dir.join("data"))]);
+    let rejected = |e: &str| e.split("; ").find(|p| p.contains("designs rejected")).map(str::to_string);
+    let null = sample_ok(&["--n", "9", "--seed", "3", "--out", "/dev/null"]);
+    assert_eq!(rejected(&err), rejected(&null));
+}

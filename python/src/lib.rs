@@ -778,16 +778,12 @@ struct PyMesh {
     mesh: BoxMesh,
 }
 
-/// A numpy array of `values` with `shape`.
-fn array<'py, T: Copy + IntoPyObjectExt<'py>>(
-    py: Python<'py>,
-    values: Vec<T>,
-    dtype: &str,
-    shape: (usize, usize),
-) -> PyResult<Bound<'py, PyAny>> {
-    let np = py.import("numpy")?;
-    let a = np.call_method1("asarray", (values, dtype))?;
-    if shape.1 == 0 { Ok(a) } else { a.call_method1("reshape", ((shape.0, shape.1),)) }
+/// A numpy array of `values`: one-dimensional for `columns == 1`, else rows of
+/// `columns` values.
+fn array<'py, T: Copy + IntoPyObjectExt<'py>>(py: Python<'py>, values: Vec<T>, dtype: &str, columns: usize) -> PyResult<Bound<'py, PyAny>> {
+    let rows = values.len() / columns;
+    let a = py.import("numpy")?.call_method1("asarray", (values, dtype))?;
+    if columns == 1 { Ok(a) } else { a.call_method1("reshape", ((rows, columns),)) }
 }
 
 #[pymethods]
@@ -796,14 +792,14 @@ impl PyMesh {
     #[getter]
     fn vertices<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let v: Vec<f64> = self.mesh.vertices.iter().flat_map(|p| [p.x, p.y, p.z]).collect();
-        array(py, v, "float64", (self.mesh.vertices.len(), 3))
+        array(py, v, "float64", 3)
     }
 
     /// Triangles, `(F, 3)` int64 vertex ids.
     #[getter]
     fn faces<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let f: Vec<i64> = self.mesh.faces.iter().flat_map(|f| f.vertices.map(|i| i as i64)).collect();
-        array(py, f, "int64", (self.mesh.faces.len(), 3))
+        array(py, f, "int64", 3)
     }
 
     /// Texture coordinates, `(T, 2)` float64 (cm from each panel's corner).
@@ -811,21 +807,21 @@ impl PyMesh {
     fn uvs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let t = self.mesh.texture_coordinates();
         let v: Vec<f64> = t.iter().flat_map(|p| [p.x, p.y]).collect();
-        array(py, v, "float64", (t.len(), 2))
+        array(py, v, "float64", 2)
     }
 
     /// Texture coordinate ids of each triangle's corners, `(F, 3)` int64.
     #[getter]
     fn face_uvs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let f: Vec<i64> = self.mesh.faces.iter().flat_map(|f| f.uvs.map(|i| i as i64)).collect();
-        array(py, f, "int64", (self.mesh.faces.len(), 3))
+        array(py, f, "int64", 3)
     }
 
     /// Panel of each triangle, `(F,)` int64 (index into `panel_names`).
     #[getter]
     fn face_panels<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let f: Vec<i64> = self.mesh.faces.iter().map(|f| f.panel as i64).collect();
-        array(py, f, "int64", (self.mesh.faces.len(), 0))
+        array(py, f, "int64", 1)
     }
 
     /// Panel of each vertex, `(V,)` int64; -1 for merged stitch vertices.
@@ -840,7 +836,7 @@ impl PyMesh {
                 VertexLabel::Stitch(_) => -1,
             })
             .collect();
-        array(py, v, "int64", (self.mesh.vertices.len(), 0))
+        array(py, v, "int64", 1)
     }
 
     /// Segmentation label of each vertex (a panel name, or `stitch_k,...`), as
@@ -874,7 +870,7 @@ impl PyMesh {
                     a.reverse();
                 }
                 let pairs: Vec<i64> = a.iter().zip(&b).flat_map(|(x, y)| [*x as i64, *y as i64]).collect();
-                array(py, pairs, "int64", (a.len().min(b.len()), 2))
+                array(py, pairs, "int64", 2)
             })
             .collect()
     }
@@ -886,7 +882,7 @@ impl PyMesh {
         let r = &self.mesh.rest_lengths;
         let pairs: Vec<i64> = r.iter().flat_map(|(e, _)| e.map(|i| i as i64)).collect();
         let lens: Vec<f64> = r.iter().map(|(_, l)| *l).collect();
-        PyTuple::new(py, [array(py, pairs, "int64", (r.len(), 2))?, array(py, lens, "float64", (r.len(), 0))?])
+        PyTuple::new(py, [array(py, pairs, "int64", 2)?, array(py, lens, "float64", 1)?])
     }
 
     /// The mesh files as `{file name: bytes}` (as `garmentcode mesh` writes them).

@@ -1,5 +1,5 @@
 //! A small stroke font for the PNG, so that rendering needs no system fonts and
-//! gives the same pixels everywhere.
+//! gives the same pixels everywhere. The layout also measures names with it.
 //!
 //! Glyphs are polylines on a grid: x from 0 to the glyph width, y up from the
 //! baseline (0), with the x-height at 8, capitals and ascenders at 12 and
@@ -14,10 +14,12 @@ const CAP_UNITS: f64 = 12.0;
 /// Capital height as a fraction of the font size.
 pub const CAP_HEIGHT: f64 = 0.7;
 /// x-height as a fraction of the font size.
+#[cfg(feature = "png")]
 pub const X_HEIGHT: f64 = CAP_HEIGHT * 8.0 / CAP_UNITS;
 /// Space between glyphs, grid units.
 const SPACING: f64 = 2.5;
 /// Stroke width as a fraction of the font size.
+#[cfg(feature = "png")]
 pub const STROKE: f64 = 0.085;
 
 /// Glyphs: character, width in grid units, strokes (`;`-separated polylines of

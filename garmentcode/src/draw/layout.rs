@@ -7,6 +7,7 @@
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
+use super::font;
 use super::options::{DrawOptions, FLAT_ROW_WIDTH, Layout};
 use crate::arc::SvgArc;
 use crate::bezier::Bezier;
@@ -33,8 +34,22 @@ pub const EDGE_ID_FILL: Rgb = [44, 131, 68];
 pub const FONT_SIZE: f64 = 7.0;
 /// Radius of a stitch marker disc, cm: big enough for two digits at 3 px/cm.
 pub const MARKER_RADIUS: f64 = 2.4;
-/// Font size of the number in a stitch marker, cm.
+/// Font size of the number in a stitch marker, cm (at [`MARKER_RADIUS`]; a
+/// smaller disc has a proportionally smaller number).
 pub const MARKER_FONT_SIZE: f64 = 3.4;
+/// Sizes a marker is tried at, as fractions of [`MARKER_RADIUS`]: where a full-size
+/// disc does not fit, a smaller one may; the last is the floor (digits still about
+/// 5 px high at 3 px/cm).
+pub const MARKER_SCALES: [f64; 3] = [1.0, 0.85, 0.7];
+/// How many rows of discs deep into the panel a marker is tried.
+const MARKER_DEPTHS: usize = 3;
+/// Directions tried on each ring of spots outside a panel, in degrees from
+/// straight out of the edge.
+const LEADER_TURNS: [f64; 12] = [0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 120.0, -120.0, 150.0, -150.0, 180.0];
+/// Most rings of spots tried outside a panel (bounds the work on absurd sizes).
+const MAX_LEADER_RINGS: f64 = 2000.0;
+/// Width of the leader line from an edge to its marker moved outside the panel, cm.
+pub const LEADER_WIDTH: f64 = 0.2;
 /// Width of the coloured trace over a stitched edge, cm.
 pub const MARKER_TRACE_WIDTH: f64 = 0.6;
 /// White ring around a marker disc, cm, to separate it from the trace.
@@ -95,6 +110,16 @@ impl BBox {
 
     fn union(&self, o: &BBox) -> BBox {
         BBox { min: self.min.min(o.min), max: self.max.max(o.max) }
+    }
+
+    /// A square of half-side `r` around `c`.
+    fn around(c: Vec2, r: f64) -> BBox {
+        BBox { min: c - Vec2::splat(r), max: c + Vec2::splat(r) }
+    }
+
+    /// Whether the two boxes share more than a boundary.
+    pub fn overlaps(&self, o: &BBox) -> bool {
+        self.min.x < o.max.x && o.min.x < self.max.x && self.min.y < o.max.y && o.min.y < self.max.y
     }
 
     /// Centre of the box.
@@ -160,6 +185,25 @@ pub struct Text {
     pub kind: TextKind,
 }
 
+impl Text {
+    /// The box the text takes on the sheet (an estimate, as the SVG viewer picks
+    /// the font): as wide as the PNG's stroke font sets it or 0.6 em per character,
+    /// whichever is wider, and one em high.
+    pub fn bbox(&self) -> BBox {
+        let chars = self.text.chars().count() as f64;
+        let w = font::set(&self.text, self.size).width.max(0.6 * self.size * chars);
+        let left = match self.anchor {
+            Anchor::StartBaseline => self.pos.x,
+            _ => self.pos.x - w / 2.0,
+        };
+        let top = match self.anchor {
+            Anchor::StartBaseline | Anchor::MiddleBaseline => self.pos.y - 0.75 * self.size,
+            Anchor::MiddleMiddle | Anchor::MiddleCentral => self.pos.y - 0.5 * self.size,
+        };
+        BBox { min: Vec2::new(left, top), max: Vec2::new(left + w, top + self.size) }
+    }
+}
+
 /// One side of a stitch, marked on the sheet.
 #[derive(Clone, Debug)]
 pub struct Marker {
@@ -173,6 +217,14 @@ pub struct Marker {
     pub color: Rgb,
     /// Centre of the marker disc.
     pub centre: Vec2,
+    /// Radius of the disc: [`MARKER_RADIUS`] or, where that does not fit, one of
+    /// the smaller [`MARKER_SCALES`].
+    pub radius: f64,
+    /// The point of the edge the marker stands for.
+    pub anchor: Vec2,
+    /// The marker found no room inside its panel and sits outside, joined to
+    /// `anchor` by a leader line.
+    pub leader: bool,
 }
 
 impl Marker {
@@ -181,11 +233,16 @@ impl Marker {
         Text {
             pos: self.centre,
             text: self.stitch.to_string(),
-            size: MARKER_FONT_SIZE,
+            size: MARKER_FONT_SIZE * self.radius / MARKER_RADIUS,
             fill: [255, 255, 255],
             anchor: Anchor::MiddleCentral,
             kind: TextKind::Marker,
         }
+    }
+
+    /// The box of the disc with its white ring.
+    pub fn bbox(&self) -> BBox {
+        BBox::around(self.centre, self.radius + MARKER_RING_WIDTH / 2.0)
     }
 }
 
@@ -235,19 +292,25 @@ impl Segment {
         }
     }
 
-    /// Parameter of the arc-length midpoint.
-    fn mid_param(&self) -> f64 {
+    /// Parameter of the point at fraction `f` of the arc length.
+    fn length_param(&self, f: f64) -> f64 {
         match self.bezier() {
             // Lines and arcs are uniform in arc length.
-            None => 0.5,
-            Some(b) => b.inverse_length(b.length() / 2.0).unwrap_or(0.5),
+            None => f,
+            Some(b) => b.inverse_length(b.length() * f).unwrap_or(f),
         }
     }
 
     /// Arc-length midpoint and the unit tangent there (the chord direction where the
     /// curve has no tangent).
     pub fn midpoint(&self) -> (Vec2, Vec2) {
-        let t = self.mid_param();
+        self.at_fraction(0.5)
+    }
+
+    /// The point at fraction `f` of the arc length and the unit tangent there (the
+    /// chord direction where the curve has no tangent).
+    pub fn at_fraction(&self, f: f64) -> (Vec2, Vec2) {
+        let t = self.length_param(f);
         let d = self.derivative(t);
         let d = if d.length() > 1e-12 { d } else { self.end - self.start };
         let tangent = if d.length() > 1e-12 { d.normalize() } else { Vec2::X };
@@ -389,12 +452,14 @@ pub fn layout(p: &Pattern, opts: &DrawOptions) -> Result<Sheet> {
     }
 
     let all = panels.iter().skip(1).fold(panels[0].bbox, |acc, q| acc.union(&q.bbox));
-    let m = opts.margin;
-    let size = all.max - all.min;
-    let view_box = [round3(all.min.x - m), round3(all.min.y - m), round3(size.x + 2.0 * m), round3(size.y + 2.0 * m)];
-
-    let markers = if opts.stitch_markers { markers(p, &panels)? } else { Vec::new() };
+    let m = Vec2::splat(opts.margin);
     let texts = texts(&panels, opts);
+    let names: Vec<BBox> = texts.iter().filter(|t| t.kind == TextKind::Name).map(Text::bbox).collect();
+    let markers = if opts.stitch_markers { markers(p, &panels, &names)? } else { Vec::new() };
+    // The margin around the panels, and room for markers moved outside them.
+    let all = markers.iter().fold(BBox { min: all.min - m, max: all.max + m }, |acc, k| acc.union(&k.bbox()));
+    let size = all.max - all.min;
+    let view_box = [round3(all.min.x), round3(all.min.y), round3(size.x), round3(size.y)];
     Ok(Sheet { view_box, panels, markers, texts })
 }
 
@@ -564,12 +629,22 @@ fn hsl_to_rgb(h: f64, s: f64, l: f64) -> Rgb {
     [to8(r), to8(g), to8(b)]
 }
 
-/// Markers of both sides of every stitch: a disc just inside the panel, next to the
-/// arc-length midpoint of the stitched edge; in a panel narrower than the disc
-/// (waistbands, cuffs) it is centred across the panel instead.
-fn markers(p: &Pattern, panels: &[PlacedPanel]) -> Result<Vec<Marker>> {
+/// Markers of both sides of every stitch, placed one after the other so that no
+/// marker overlaps a panel name (`names`) or a marker placed before it.
+///
+/// Each marker is tried at full size, then at the smaller [`MARKER_SCALES`]; at
+/// each size at the arc-length midpoint of its edge, then ever further towards the
+/// edge's ends ([`marker_fractions`]); at each point just inside the panel, then
+/// one or two disc rows deeper. A candidate must lie inside the panel with its disc
+/// clear of the outline (in a panel narrower than the disc, such as a waistband or
+/// a cuff, centred across it instead, where it is at least a radius across). When no candidate is free, the full-size
+/// marker goes outside the panel, to the free spot nearest the edge's midpoint on
+/// rings around it (starting straight out from the edge), and a leader line joins
+/// it to the edge. The order is fixed, so the result is deterministic.
+fn markers(p: &Pattern, panels: &[PlacedPanel], names: &[BBox]) -> Result<Vec<Marker>> {
     let by_name: HashMap<&str, usize> = panels.iter().enumerate().map(|(k, q)| (q.name.as_str(), k)).collect();
     let mut polygons: Vec<Option<Vec<Vec2>>> = vec![None; panels.len()];
+    let mut taken: Vec<BBox> = names.to_vec();
     let mut out = Vec::with_capacity(2 * p.stitches.len());
     for (i, st) in p.stitches.iter().enumerate() {
         for side in &st.sides {
@@ -581,16 +656,119 @@ fn markers(p: &Pattern, panels: &[PlacedPanel]) -> Result<Vec<Marker>> {
                 .segments
                 .get(side.edge)
                 .ok_or_else(|| Error::Input(format!("stitch {i} refers to a missing edge {} of panel '{}'", side.edge, side.panel)))?;
-            let (mid, tangent) = seg.midpoint();
-            let left = Vec2::new(-tangent.y, tangent.x);
-            let inward = if q.ccw { left } else { -left };
             let poly = polygons[k].get_or_insert_with(|| polygon(&q.segments, 16));
-            let across = ray_distance(poly, mid, inward).unwrap_or(f64::INFINITY);
-            let offset = (MARKER_RADIUS + MARKER_GAP).min(across / 2.0);
-            out.push(Marker { stitch: i, panel: k, edge: side.edge, color: stitch_color(i), centre: mid + inward * offset });
+            let (centre, radius, anchor, leader) = place_marker(seg, q.ccw, poly, &taken);
+            let marker = Marker { stitch: i, panel: k, edge: side.edge, color: stitch_color(i), centre, radius, anchor, leader };
+            taken.push(marker.bbox());
+            out.push(marker);
         }
     }
     Ok(out)
+}
+
+/// Arc-length fractions of an edge `length` cm long at which a marker of radius
+/// `r` is tried: the midpoint, then alternately either side of it, about half a
+/// radius apart (at least 1/32 and at most 1/8 of the edge), short of the ends.
+fn marker_fractions(length: f64, r: f64) -> Vec<f64> {
+    let step = (0.5 * r / length).clamp(1.0 / 32.0, 1.0 / 8.0);
+    let mut out = vec![0.5];
+    let mut k = 1.0;
+    while k * step < 0.5 - 1e-9 {
+        out.extend([0.5 - k * step, 0.5 + k * step]);
+        k += 1.0;
+    }
+    out
+}
+
+/// Where the marker of edge `seg` of the panel outlined by `poly` goes, clear of
+/// the boxes `taken`: disc centre, radius, the edge point it stands for, and
+/// whether it sits outside the panel with a leader line.
+fn place_marker(seg: &Segment, ccw: bool, poly: &[Vec2], taken: &[BBox]) -> (Vec2, f64, Vec2, bool) {
+    let free = |c: Vec2, r: f64| {
+        let b = BBox::around(c, r + MARKER_RING_WIDTH / 2.0);
+        !taken.iter().any(|t| t.overlaps(&b))
+    };
+    // An edge point and the unit normal into the panel there.
+    let at = |f: f64| {
+        let (at, tangent) = seg.at_fraction(f);
+        let left = Vec2::new(-tangent.y, tangent.x);
+        (at, if ccw { left } else { -left })
+    };
+    let edge: Vec<Vec2> = (0..=16).map(|k| seg.point(k as f64 / 16.0)).collect();
+    let length: f64 = edge.windows(2).map(|w| (w[1] - w[0]).length()).sum();
+    for scale in MARKER_SCALES {
+        let r = MARKER_RADIUS * scale;
+        for f in marker_fractions(length, r) {
+            let (at, inward) = at(f);
+            let across = ray_distance(poly, at, inward).unwrap_or(f64::INFINITY);
+            let first = (r + MARKER_GAP).min(across / 2.0);
+            for row in 0..MARKER_DEPTHS {
+                let depth = first + row as f64 * (2.0 * r + MARKER_GAP);
+                if row > 0 && depth + first > across {
+                    break;
+                }
+                let c = at + inward * depth;
+                // Free, inside, and the disc clear of the outline (but for a tenth
+                // of its radius) unless the panel is narrower than the disc; a
+                // panel less than a radius across is too thin to hold it.
+                // Deeper rows only where no other edge is much nearer than its own.
+                let clear = distance_to_polyline(poly, true, c);
+                let fits = across >= r && clear >= 0.9 * r.min(across / 2.0) && distance_to_polyline(&edge, false, c) <= clear + r;
+                if free(c, r) && inside(poly, c) && fits {
+                    return (c, r, at, false);
+                }
+            }
+        }
+    }
+    // Outside the panel: rings around the midpoint a radius apart, each tried from
+    // straight out of the edge round to the other side. Beyond `reach` (every box
+    // taken and the panel itself) the first spot of a ring is free and outside.
+    let r = MARKER_RADIUS;
+    let (mid, inward) = at(0.5);
+    let farthest = |acc: f64, p: Vec2| acc.max((p - mid).length());
+    let reach = taken
+        .iter()
+        .flat_map(|b| [b.min, b.max, Vec2::new(b.min.x, b.max.y), Vec2::new(b.max.x, b.min.y)])
+        .chain(poly.iter().copied())
+        .fold(0.0, farthest);
+    let rings = ((reach / r).ceil() + 4.0).min(MAX_LEADER_RINGS);
+    let mut ring = 0.0;
+    while ring < rings {
+        let distance = r + MARKER_GAP + ring * r;
+        for turn in LEADER_TURNS {
+            let c = mid + rotate2d(-inward, turn.to_radians()) * distance;
+            if free(c, r) && !inside(poly, c) {
+                return (c, r, mid, true);
+            }
+        }
+        ring += 1.0;
+    }
+    (mid - inward * (reach + 3.0 * r), r, mid, true)
+}
+
+/// Whether `p` lies inside the closed polygon (even-odd rule).
+fn inside(poly: &[Vec2], p: Vec2) -> bool {
+    let mut c = false;
+    for k in 0..poly.len() {
+        let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
+        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
+            c = !c;
+        }
+    }
+    c
+}
+
+/// Distance from `p` to a polyline (`closed`: back to its first point).
+fn distance_to_polyline(pts: &[Vec2], closed: bool, p: Vec2) -> f64 {
+    let pieces = if closed { pts.len() } else { pts.len().saturating_sub(1) };
+    let mut best = f64::INFINITY;
+    for k in 0..pieces {
+        let (a, b) = (pts[k], pts[(k + 1) % pts.len()]);
+        let e = b - a;
+        let t = if e.length_squared() > 0.0 { ((p - a).dot(e) / e.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
+        best = best.min((a + e * t - p).length());
+    }
+    best
 }
 
 /// Font size of a panel's name: the reference's [`FONT_SIZE`], smaller when the

@@ -8,10 +8,22 @@
 //! reference's pink with its outline and panel names.
 //!
 //! On top of that the drawing marks the stitches (the reference draws none): every
-//! stitch gets a colour and a numbered marker (its index in `pattern.stitches`) at the
-//! arc-length midpoint of both of its edges, just inside the panel, with the edges
-//! themselves traced in that colour, so one sees what sews to what. Vertex and edge
-//! indices (the reference's `view_ids`) can be switched on.
+//! stitch gets a colour and a numbered marker (its index in `pattern.stitches`) on
+//! both of its edges, with the edges themselves traced in that colour, so one sees
+//! what sews to what. Vertex and edge indices (the reference's `view_ids`) can be
+//! switched on.
+//!
+//! Markers never overlap each other or a panel name. Where many short stitched
+//! edges come together (darts, collars, cuffs, waistbands) they cannot all sit at
+//! their edges' midpoints, so each marker is placed in turn, in stitch order, at
+//! the first free spot of a fixed search: just inside the panel at the arc-length
+//! midpoint of its edge, then at points further along the edge, then a row or two
+//! deeper into the panel, then all of that again with a smaller disc (down to 70%);
+//! a marker with no room inside goes outside the panel, to the nearest free spot
+//! around its edge's midpoint, with a leader line to the edge. The boxes compared
+//! are the discs' and the names' (names estimated as the PNG's font sets them, or
+//! at 0.6 em per character when that is wider). The sheet grows to hold markers
+//! outside the panels.
 //!
 //! Both outputs are built from one layout of the sheet, so the PNG shows exactly
 //! what the SVG describes, and both are deterministic: the same pattern and options
@@ -19,7 +31,6 @@
 //! system fonts are needed. The PNG output (and its dependencies, `tiny-skia` and
 //! `png`) is behind the `png` cargo feature, on by default.
 
-#[cfg(feature = "png")]
 mod font;
 mod layout;
 mod options;

@@ -8,7 +8,7 @@ use tiny_skia::{Color, FillRule, LineCap, LineJoin, Paint, Path, PathBuilder, Pi
 
 use super::font;
 use super::layout::{
-    Anchor, MARKER_RADIUS, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH, PlacedPanel, Rgb, Segment,
+    Anchor, LEADER_WIDTH, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH, PlacedPanel, Rgb, Segment,
     Shape, Sheet, Text, TextKind,
 };
 use super::options::DrawOptions;
@@ -138,6 +138,7 @@ pub fn render(sheet: &Sheet, opts: &DrawOptions) -> Result<Vec<u8>> {
 
     // Names under the stitch markers (which are small and must stay visible), indices on top.
     draw_texts(&mut pm, sheet, TextKind::Name, tf);
+    // Every trace and leader line first, so that none runs over a disc.
     for m in &sheet.markers {
         let seg = &sheet.panels[m.panel].segments[m.edge];
         let mut pb = PathBuilder::new();
@@ -146,7 +147,17 @@ pub fn render(sheet: &Sheet, opts: &DrawOptions) -> Result<Vec<u8>> {
         if let Some(path) = pb.finish() {
             pm.stroke_path(&path, &paint(m.color), &round_stroke(MARKER_TRACE_WIDTH), tf, None);
         }
-        if let Some(disc) = PathBuilder::from_circle(m.centre.x as f32, m.centre.y as f32, MARKER_RADIUS as f32) {
+        if m.leader {
+            let mut pb = PathBuilder::new();
+            pb.move_to(m.anchor.x as f32, m.anchor.y as f32);
+            pb.line_to(m.centre.x as f32, m.centre.y as f32);
+            if let Some(path) = pb.finish() {
+                pm.stroke_path(&path, &paint(m.color), &Stroke { width: LEADER_WIDTH as f32, ..Stroke::default() }, tf, None);
+            }
+        }
+    }
+    for m in &sheet.markers {
+        if let Some(disc) = PathBuilder::from_circle(m.centre.x as f32, m.centre.y as f32, m.radius as f32) {
             pm.fill_path(&disc, &paint(m.color), FillRule::Winding, tf, None);
             let ring = Stroke { width: MARKER_RING_WIDTH as f32, ..Stroke::default() };
             pm.stroke_path(&disc, &paint([255, 255, 255]), &ring, tf, None);

@@ -1,14 +1,15 @@
 //! The sheet as an SVG document.
 //!
 //! Layers, bottom to top: panels (one `<g id="NAME">` each, the outline as one
-//! `<path>`), panel names, stitch markers (small, so kept above the names), indices.
+//! `<path>`), panel names, stitch markers (the traced edges and leader lines, then
+//! the discs; kept above the names, which they never overlap), indices.
 //! Every number is written with at most 3 decimals (arc radii: 6) and without `-0`,
 //! so the bytes only change when the drawing does.
 
 use std::fmt::Write;
 
 use super::layout::{
-    Anchor, MARKER_RADIUS, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH, PlacedPanel, Rgb, Segment,
+    Anchor, LEADER_WIDTH, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH, PlacedPanel, Rgb, Segment,
     Shape, Sheet, Text, TextKind,
 };
 use crate::math::Vec2;
@@ -178,39 +179,54 @@ fn texts(out: &mut String, sheet: &Sheet, kind: TextKind, class: &str) {
     out.push_str("</g>\n");
 }
 
-/// One group per stitch side: the edge traced in the stitch colour, a disc, the number.
+/// The stitch markers: first every stitched edge traced in its stitch's colour
+/// (with the leader lines of markers outside their panels), then one group per
+/// stitch side with its disc and number, so that no line runs over a disc.
 fn markers(out: &mut String, sheet: &Sheet) {
-    if !sheet.markers.is_empty() {
-        out.push_str("<g class=\"stitches\" font-family=\"sans-serif\">\n");
-        for m in &sheet.markers {
-            let q = &sheet.panels[m.panel];
-            let s = &q.segments[m.edge];
-            let color = rgb(m.color);
+    if sheet.markers.is_empty() {
+        return;
+    }
+    out.push_str("<g class=\"stitches\" font-family=\"sans-serif\">\n<g class=\"traces\" fill=\"none\">\n");
+    for m in &sheet.markers {
+        let s = &sheet.panels[m.panel].segments[m.edge];
+        let color = rgb(m.color);
+        let _ = writeln!(
+            out,
+            "<path d=\"M {} {}\" stroke=\"{color}\" stroke-width=\"{}\" stroke-linecap=\"round\"/>",
+            pt(s.start),
+            command(s),
+            num(MARKER_TRACE_WIDTH)
+        );
+        if m.leader {
             let _ = writeln!(
                 out,
-                "<g class=\"stitch\" data-stitch=\"{}\" data-panel=\"{}\" data-edge=\"{}\">",
-                m.stitch,
-                escape(&q.name),
-                m.edge
+                "<path class=\"leader\" d=\"M {} L {}\" stroke=\"{color}\" stroke-width=\"{}\"/>",
+                pt(m.anchor),
+                pt(m.centre),
+                num(LEADER_WIDTH)
             );
-            let _ = writeln!(
-                out,
-                "<path d=\"M {} {}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"{}\" stroke-linecap=\"round\"/>",
-                pt(s.start),
-                command(s),
-                num(MARKER_TRACE_WIDTH)
-            );
-            let _ = writeln!(
-                out,
-                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{color}\" stroke=\"rgb(255,255,255)\" stroke-width=\"{}\"/>",
-                num(m.centre.x),
-                num(m.centre.y),
-                num(MARKER_RADIUS),
-                num(MARKER_RING_WIDTH)
-            );
-            text(out, &m.label());
-            out.push_str("</g>\n");
         }
+    }
+    out.push_str("</g>\n");
+    for m in &sheet.markers {
+        let _ = writeln!(
+            out,
+            "<g class=\"stitch\" data-stitch=\"{}\" data-panel=\"{}\" data-edge=\"{}\">",
+            m.stitch,
+            escape(&sheet.panels[m.panel].name),
+            m.edge
+        );
+        let _ = writeln!(
+            out,
+            "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"rgb(255,255,255)\" stroke-width=\"{}\"/>",
+            num(m.centre.x),
+            num(m.centre.y),
+            num(m.radius),
+            rgb(m.color),
+            num(MARKER_RING_WIDTH)
+        );
+        text(out, &m.label());
         out.push_str("</g>\n");
     }
+    out.push_str("</g>\n");
 }

@@ -45,8 +45,10 @@ fn small() -> Pattern {
     p
 }
 
-/// The expected drawing of [`small`]. Its geometry was checked against the
+/// The expected drawing of [`small`]. Its panel geometry was checked against the
 /// reference's own `get_svg` on the same pattern (within the 3-decimal rounding).
+/// The triangle's name leaves little room: one marker of stitch 1 goes outside
+/// with a leader line, the others are smaller.
 const SMALL_SVG: &str = r#"<?xml version="1.0" encoding="UTF-8" standalone="no"?>
 <svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="49.577cm" height="39.367cm" viewBox="-12 -57.367 49.577 39.367">
 <title>tiny &amp; &lt;test&gt;</title>
@@ -59,25 +61,28 @@ const SMALL_SVG: &str = r#"<?xml version="1.0" encoding="UTF-8" standalone="no"?
 <text x="27.789" y="-30" font-size="5.8" fill="rgb(31,31,31)" text-anchor="middle" dominant-baseline="middle">back</text>
 </g>
 <g class="stitches" font-family="sans-serif">
+<g class="traces" fill="none">
+<path d="M -10,-20 L 10,-20" stroke="rgb(170,24,24)" stroke-width="0.6" stroke-linecap="round"/>
+<path d="M 35,-20 C 37,-26 33,-34 35,-40" stroke="rgb(170,24,24)" stroke-width="0.6" stroke-linecap="round"/>
+<path d="M 35,-40 L 20,-30" stroke="rgb(28,110,52)" stroke-width="0.6" stroke-linecap="round"/>
+<path class="leader" d="M 27.5,-35 L 25.891,-37.413" stroke="rgb(28,110,52)" stroke-width="0.2"/>
+<path d="M 20,-30 L 35,-20" stroke="rgb(28,110,52)" stroke-width="0.6" stroke-linecap="round"/>
+</g>
 <g class="stitch" data-stitch="0" data-panel="front" data-edge="0">
-<path d="M -10,-20 L 10,-20" fill="none" stroke="rgb(170,24,24)" stroke-width="0.6" stroke-linecap="round"/>
 <circle cx="0" cy="-22.9" r="2.4" fill="rgb(170,24,24)" stroke="rgb(255,255,255)" stroke-width="0.25"/>
 <text x="0" y="-22.9" font-size="3.4" fill="rgb(255,255,255)" text-anchor="middle" dominant-baseline="central">0</text>
 </g>
 <g class="stitch" data-stitch="0" data-panel="back" data-edge="0">
-<path d="M 35,-20 C 37,-26 33,-34 35,-40" fill="none" stroke="rgb(170,24,24)" stroke-width="0.6" stroke-linecap="round"/>
-<circle cx="32.129" cy="-29.59" r="2.4" fill="rgb(170,24,24)" stroke="rgb(255,255,255)" stroke-width="0.25"/>
-<text x="32.129" y="-29.59" font-size="3.4" fill="rgb(255,255,255)" text-anchor="middle" dominant-baseline="central">0</text>
+<circle cx="32.267" cy="-34.911" r="1.68" fill="rgb(170,24,24)" stroke="rgb(255,255,255)" stroke-width="0.25"/>
+<text x="32.267" y="-34.911" font-size="2.38" fill="rgb(255,255,255)" text-anchor="middle" dominant-baseline="central">0</text>
 </g>
 <g class="stitch" data-stitch="1" data-panel="back" data-edge="1">
-<path d="M 35,-40 L 20,-30" fill="none" stroke="rgb(28,110,52)" stroke-width="0.6" stroke-linecap="round"/>
-<circle cx="29.109" cy="-32.587" r="2.4" fill="rgb(28,110,52)" stroke="rgb(255,255,255)" stroke-width="0.25"/>
-<text x="29.109" y="-32.587" font-size="3.4" fill="rgb(255,255,255)" text-anchor="middle" dominant-baseline="central">1</text>
+<circle cx="25.891" cy="-37.413" r="2.4" fill="rgb(28,110,52)" stroke="rgb(255,255,255)" stroke-width="0.25"/>
+<text x="25.891" y="-37.413" font-size="3.4" fill="rgb(255,255,255)" text-anchor="middle" dominant-baseline="central">1</text>
 </g>
 <g class="stitch" data-stitch="1" data-panel="back" data-edge="2">
-<path d="M 20,-30 L 35,-20" fill="none" stroke="rgb(28,110,52)" stroke-width="0.6" stroke-linecap="round"/>
-<circle cx="29.109" cy="-27.413" r="2.4" fill="rgb(28,110,52)" stroke="rgb(255,255,255)" stroke-width="0.25"/>
-<text x="29.109" y="-27.413" font-size="3.4" fill="rgb(255,255,255)" text-anchor="middle" dominant-baseline="central">1</text>
+<circle cx="32.304" cy="-24.85" r="2.04" fill="rgb(28,110,52)" stroke="rgb(255,255,255)" stroke-width="0.25"/>
+<text x="32.304" y="-24.85" font-size="2.89" fill="rgb(255,255,255)" text-anchor="middle" dominant-baseline="central">1</text>
 </g>
 </g>
 </svg>
@@ -152,8 +157,10 @@ fn broken_loop_starts_a_new_subpath() {
 // ---------------------------------------------------------------------------
 // Reference cases
 
-fn cases() -> Vec<(String, Pattern)> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data/cases");
+/// The patterns in the folders of `dir` (relative to the workspace's test data)
+/// that hold a `specification.json`, by folder name.
+fn patterns_in(dir: &str) -> Vec<(String, Pattern)> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data").join(dir);
     let mut dirs: Vec<PathBuf> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
         .map(|e| e.unwrap().path())
@@ -168,6 +175,11 @@ fn cases() -> Vec<(String, Pattern)> {
             (name, p)
         })
         .collect()
+}
+
+/// The reference cases.
+fn cases() -> Vec<(String, Pattern)> {
+    patterns_in("cases")
 }
 
 /// Width and height from a PNG's IHDR chunk.
@@ -241,7 +253,8 @@ fn inside(poly: &[Vec2], p: Vec2) -> bool {
     c
 }
 
-/// The marker of each stitched edge sits inside its panel. Panels that intersect
+/// The marker of each stitched edge sits inside its panel (but for those moved
+/// outside with a leader line), next to a point of its edge. Panels that intersect
 /// themselves (curves crossing a neighbouring edge; flagged in the cases'
 /// `checks.json`) have no well-defined inside near the crossing, so those cases
 /// are skipped.
@@ -255,12 +268,14 @@ fn markers_point_into_their_panel() {
             continue;
         }
         let sheet = layout::layout(&p, &DrawOptions::default()).unwrap();
-        for m in &sheet.markers {
-            let (mid, _) = sheet.panels[m.panel].segments[m.edge].midpoint();
-            let probe = mid + (m.centre - mid).normalize() * 0.3;
+        for m in sheet.markers.iter().filter(|m| !m.leader) {
             let q = &sheet.panels[m.panel];
+            let seg = &q.segments[m.edge];
+            let on_edge = (0..=64).any(|k| (seg.point(k as f64 / 64.0) - m.anchor).length() < 0.05 * seg.start.distance(seg.end).max(1.0));
+            assert!(on_edge, "{name}: marker of stitch {} on {} edge {} is not anchored on its edge", m.stitch, q.name, m.edge);
+            let probe = m.anchor + (m.centre - m.anchor).normalize() * 0.3;
             assert!(
-                inside(&polygon(&sheet, m.panel), probe),
+                inside(&polygon(&sheet, m.panel), probe) && inside(&polygon(&sheet, m.panel), m.centre),
                 "{name}: marker of stitch {} on {} edge {} is outside",
                 m.stitch,
                 q.name,
@@ -270,6 +285,66 @@ fn markers_point_into_their_panel() {
         }
     }
     assert!(checked > 1000, "{checked} markers checked");
+}
+
+/// Every drawing of the reference cases and of the built-in designs, placed and
+/// flat: no two stitch markers overlap, no marker overlaps a panel name, every
+/// marker is at least the smallest size and lies on the sheet, and a marker moved
+/// outside its panel has a leader line. The name boxes are checked to hold the
+/// names as the PNG sets them.
+#[test]
+fn markers_never_overlap() {
+    use super::Layout;
+    let all: Vec<(String, Pattern)> = cases().into_iter().chain(patterns_in("named")).collect();
+    assert_eq!(all.len(), 57 + 5);
+    let (mut markers, mut shrunk, mut leaders) = (0, 0, 0);
+    for (name, p) in &all {
+        for layout in [Layout::Placed, Layout::Flat] {
+            let opts = DrawOptions { layout, ..Default::default() };
+            let sheet = layout::layout(p, &opts).unwrap();
+            let names: Vec<&layout::Text> = sheet.texts.iter().filter(|t| t.kind == layout::TextKind::Name).collect();
+            assert_eq!(names.len(), p.panels.len());
+            for t in &names {
+                let b = t.bbox();
+                let set = super::font::set(&t.text, t.size);
+                assert!(b.max.x - b.min.x >= set.width - 1e-9 && b.max.y - b.min.y >= t.size - 1e-9, "{name}: box of {}", t.text);
+            }
+            let [vx, vy, vw, vh] = sheet.view_box;
+            for (i, m) in sheet.markers.iter().enumerate() {
+                let b = m.bbox();
+                let floor = layout::MARKER_RADIUS * layout::MARKER_SCALES[layout::MARKER_SCALES.len() - 1];
+                assert!(m.radius >= floor - 1e-9 && m.radius <= layout::MARKER_RADIUS, "{name}: radius {}", m.radius);
+                assert!(
+                    m.label().size * layout::MARKER_RADIUS == layout::MARKER_FONT_SIZE * m.radius,
+                    "{name}: number scales with its disc"
+                );
+                let what = |m: &layout::Marker| {
+                    format!("{name} ({layout:?}): marker of stitch {} on {} edge {}", m.stitch, sheet.panels[m.panel].name, m.edge)
+                };
+                for other in &sheet.markers[..i] {
+                    assert!(!b.overlaps(&other.bbox()), "{} overlaps {}", what(m), what(other));
+                }
+                for t in &names {
+                    assert!(!b.overlaps(&t.bbox()), "{} overlaps the name {}", what(m), t.text);
+                }
+                let on_sheet = b.min.x >= vx - 1e-3 && b.min.y >= vy - 1e-3 && b.max.x <= vx + vw + 1e-3 && b.max.y <= vy + vh + 1e-3;
+                assert!(on_sheet, "{} is off the sheet", what(m));
+                markers += 1;
+                shrunk += usize::from(m.radius < layout::MARKER_RADIUS);
+                leaders += usize::from(m.leader);
+            }
+            let svg = to_svg(p, &opts).unwrap();
+            assert_eq!(svg.matches("<path class=\"leader\"").count(), sheet.markers.iter().filter(|m| m.leader).count(), "{name}");
+        }
+    }
+    eprintln!("{markers} markers: {shrunk} smaller, {leaders} outside with a leader line");
+    // Most markers keep their full size inside their panel; at most one in four
+    // needs a leader line.
+    assert!(markers > 5000, "{markers} markers");
+    assert!(
+        10 * (shrunk + leaders) < 4 * markers && 4 * leaders < markers,
+        "{markers} markers: {shrunk} smaller, {leaders} with a leader line"
+    );
 }
 
 #[test]

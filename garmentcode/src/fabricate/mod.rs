@@ -9,7 +9,8 @@
 //!   cover page (title block, cut list and page map), overlap margins, row/column
 //!   labels and alignment marks on every page, and blank pages left out;
 //! - `pattern-sheet.pdf` and `pattern-sheet.svg`: every piece on one sheet (A0 or a
-//!   roll width) for a plotter or a copy shop;
+//!   roll width) for a plotter or a copy shop (a PDF sheet longer than 5 m comes in
+//!   parts, see below);
 //! - `pattern.dxf`: DXF-AAMA (R12, millimetres), one block per piece;
 //! - `cutting-layout.svg` and `cutting-layout.txt`: the pieces on a fabric width,
 //!   each as many times as it is cut, and the length of fabric needed.
@@ -51,7 +52,19 @@
 //!
 //! PDF is written with `pdf-writer` (uncompressed, no dates, so the bytes depend on
 //! the pattern alone) and the standard Type 1 font Helvetica, which every PDF reader
-//! has built in and which needs no embedding. The SVG names the same font. The DXF
+//! has built in and which needs no embedding.
+//!
+//! **Long sheets.** PDF readers limit a page to 200 inches (14 400 pt, 508 cm) a
+//! side, and a long layout (a narrow roll, a maxi dress) can run past that. Such a
+//! one-sheet PDF is split into the fewest equal parts of at most 5 m
+//! (`MAX_PAGE`), each printed at 1:1 and joined as the tiled pages are: an overlap
+//! strip with a dashed line and registration marks, and the part's name and its
+//! neighbours' on every part. We do not use the alternative, PDF 1.6's `UserUnit`
+//! (one page with bigger units): readers that ignore it, such as poppler (`pdfinfo`,
+//! `pdftoppm` and the Linux viewers built on it), show and print the page scaled
+//! down, and a pattern printed at the wrong scale is worse than none, while parts
+//! of a roll at 1:1 print correctly everywhere and a copy shop prints each as one
+//! length of roll. The SVG has no such limit and stays one sheet. The SVG names the same font. The DXF
 //! is written by hand ([`dxf`]): AAMA files are plain R12 (`AC1009`), a small text
 //! format without handles, and the `dxf` crate writes newer versions' structure
 //! and a creation time into every file, which would break byte-identical output.

@@ -92,12 +92,38 @@ fn text_at(c: &mut Content, (x, y): (f32, f32), size: f32, angle: f64, text: &st
     c.end_text();
 }
 
-/// The one-sheet drawing on a single page of its own size.
+/// Longest side of a PDF page (cm). Readers refuse or misdraw pages over 200 in
+/// (14 400 pt, 508 cm), the limit of PDF's default user space.
+pub const MAX_PAGE: f64 = 500.0;
+
+/// The one-sheet drawing on a single page of its own size; a sheet longer (or
+/// wider) than [`MAX_PAGE`] on the fewest pages of equal size within it, joined as
+/// tiled pages are (see [`page_for_parts`]).
 pub fn one_sheet(s: &Sheet) -> Vec<u8> {
+    if s.size.x > MAX_PAGE || s.size.y > MAX_PAGE {
+        let page = page_for_parts(s.size);
+        let (_, _, tiles) = sheet::tiles(s, page);
+        let pages = tiles.iter().map(|t| PageOut { size: page, content: tile_page(s, t, page, &tiles) }).collect();
+        return document(pages, &s.title);
+    }
     let mut c = Content::new();
     let h = s.size.y;
     draw(&mut c, &s.prims, &|p| ((p.x * PT) as f32, ((h - p.y) * PT) as f32), PT);
     document(vec![PageOut { size: s.size, content: c.finish().to_vec() }], &s.title)
+}
+
+/// Page size (cm) that splits a sheet of `size` into the fewest parts of at most
+/// [`MAX_PAGE`] per side, laid out as [`sheet::tiles`] lays out home-printer pages:
+/// a [`PAGE_MARGIN`] round each part and [`OVERLAP`] shared with its neighbours.
+/// Along a side that fits, there is one part.
+pub fn page_for_parts(size: Vec2) -> Vec2 {
+    let margins = 2.0 * PAGE_MARGIN + OVERLAP;
+    let side = |len: f64| {
+        let parts = ((len - OVERLAP) / (MAX_PAGE - margins)).ceil().max(1.0);
+        // A hair over the exact size, so that rounding never asks for one more part.
+        ((len - OVERLAP) / parts + margins + 1e-6).min(MAX_PAGE)
+    };
+    Vec2::new(side(size.x), side(size.y))
 }
 
 /// A registration mark: a circle with a cross.

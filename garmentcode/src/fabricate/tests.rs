@@ -280,6 +280,83 @@ fn tiled_pages_reassemble_to_the_one_sheet() {
     }
 }
 
+/// Page sizes (points) from a PDF's media boxes.
+fn media_boxes(pdf: &[u8]) -> Vec<(f64, f64)> {
+    let text = String::from_utf8_lossy(pdf);
+    text.split("/MediaBox [")
+        .skip(1)
+        .map(|rest| {
+            let v: Vec<f64> = rest[..rest.find(']').unwrap()].split_whitespace().map(|x| x.parse().unwrap()).collect();
+            (v[2] - v[0], v[3] - v[1])
+        })
+        .collect()
+}
+
+/// A pattern of one `w` × `h` cm rectangle.
+fn rectangle(w: f64, h: f64) -> Pattern {
+    use crate::pattern::{EdgeSpec, PanelSpec};
+    let edge = |a, b| EdgeSpec { endpoints: [a, b], label: None, curvature: None };
+    let mut p = Pattern::new("rectangle");
+    p.panels.push(PanelSpec {
+        name: "long".into(),
+        translation: [0.0; 3],
+        rotation: [0.0; 3],
+        vertices: vec![[0.0, 0.0], [w, 0.0], [w, h], [0.0, h]],
+        edges: vec![edge(0, 1), edge(1, 2), edge(2, 3), edge(3, 0)],
+        label: None,
+    });
+    p
+}
+
+/// A one-sheet layout longer (or wider) than a PDF page may be is split into the
+/// fewest equal parts within [`pdf::MAX_PAGE`], each at 1:1 with the tiled pages'
+/// overlap, marks and labels; the parts cover the whole sheet. A sheet that fits
+/// stays one page of its own size.
+#[test]
+fn long_sheets_are_split_into_pages_within_the_pdf_limit() {
+    let limit_pt = 14_400.0;
+    let long: Vec<(String, Pattern)> = cases().into_iter().filter(|(n, _)| ["case-030", "case-060"].contains(&n.as_str())).collect();
+    let synthetic = [("very long", rectangle(40.0, 1200.0)), ("very wide", rectangle(700.0, 90.0))];
+    let all = long.into_iter().chain(synthetic.into_iter().map(|(n, p)| (n.to_string(), p)));
+    let mut split = 0;
+    for (name, p) in all {
+        let o = PrintOptions { paper: Paper::Roll(30.0), ..opts(&name) };
+        let ps = pieces(&p, &o).unwrap();
+        let s = sheet::one_sheet(&ps, &o);
+        let pdf = super::pdf::one_sheet(&s);
+        let boxes = media_boxes(&pdf);
+        let pt = 72.0 / 2.54;
+        for (w, h) in &boxes {
+            assert!(*w <= limit_pt && *h <= limit_pt, "{name}: a {w} x {h} pt page");
+        }
+        if s.size.x <= super::pdf::MAX_PAGE && s.size.y <= super::pdf::MAX_PAGE {
+            assert_eq!(boxes.len(), 1, "{name}");
+            assert!((boxes[0].0 - s.size.x * pt).abs() < 0.01 && (boxes[0].1 - s.size.y * pt).abs() < 0.01, "{name}: the sheet's own size");
+            continue;
+        }
+        split += 1;
+        let page = super::pdf::page_for_parts(s.size);
+        let (rows, cols, kept) = sheet::tiles(&s, page);
+        let step = page - Vec2::splat(2.0 * sheet::PAGE_MARGIN + sheet::OVERLAP);
+        // Every part within the limit, together covering the sheet, and no fewer would do.
+        assert!(page.x <= super::pdf::MAX_PAGE && page.y <= super::pdf::MAX_PAGE, "{name}: {page}");
+        assert!(cols as f64 * step.x + sheet::OVERLAP >= s.size.x && rows as f64 * step.y + sheet::OVERLAP >= s.size.y, "{name}");
+        let most = super::pdf::MAX_PAGE - 2.0 * sheet::PAGE_MARGIN - sheet::OVERLAP;
+        assert!(
+            (cols - 1) as f64 * most + sheet::OVERLAP < s.size.x && (rows - 1) as f64 * most + sheet::OVERLAP < s.size.y,
+            "{name}: fewest parts"
+        );
+        assert!(rows * cols > 1 && !kept.is_empty());
+        assert_eq!(boxes.len(), kept.len(), "{name}: one page per part with something on it");
+        for (w, h) in &boxes {
+            assert!((w - page.x * pt).abs() < 0.01 && (h - page.y * pt).abs() < 0.01, "{name}: 1:1");
+        }
+        let text = String::from_utf8_lossy(&pdf);
+        assert!(text.contains("(Page A1)") && text.contains("lay the next page"), "{name}: parts are labelled for joining");
+    }
+    assert_eq!(split, 4, "every sheet here is too long or too wide for one page");
+}
+
 #[test]
 fn blank_pages_are_left_out() {
     // An L-shaped layout: a wide short piece and a narrow tall one leave a blank corner.

@@ -242,7 +242,12 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
         return replay(&sampler, &opts, index, attempt);
     }
     let n = opts.n.expect("--n is required without --replay");
-    prepare_out(&opts.out)?;
+    // `--out /dev/null`: every sample is made (its files too) and discarded; nothing
+    // is read or written. The floor the file system adds to.
+    let discard = opts.out == Path::new("/dev/null");
+    if !discard {
+        prepare_out(&opts.out)?;
+    }
 
     let settings = Settings::new(&sampler, opts.formats);
     let (shard_i, shard_k) = opts.shard.unwrap_or((0, 1));
@@ -255,7 +260,11 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
     let mut index = None;
     let (resumed, jobs) = match opts.layout {
         Layout::Folders => {
-            let existing = store::scan(&opts.out, &settings, n, wanted, |r| tally.add(&r)).map_err(CliError::Input)?;
+            let existing = if discard {
+                store::Existing { finished: Vec::new(), removed_temps: 0 }
+            } else {
+                store::scan(&opts.out, &settings, n, wanted, |r| tally.add(&r)).map_err(CliError::Input)?
+            };
             if existing.removed_temps > 0 {
                 eprintln!("removed {} unfinished sample folder(s) of an interrupted run", existing.removed_temps);
             }
@@ -268,7 +277,10 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
             }
             let jobs = opts.jobs.min(todo.max(1) as usize);
             let index_of = |slot: u64| Some(shard_i + slot * shard_k).filter(|i| finished.binary_search(i).is_err());
-            let work = |arena: &mut Arena, index: u64| store::make(&opts.out, &settings, arena, index);
+            let work = |arena: &mut Arena, index: u64| match discard {
+                true => store::draw(&settings, arena, index).map(|(record, _files)| record),
+                false => store::make(&opts.out, &settings, arena, index),
+            };
             let collect = |record: Record| {
                 tally.add(&record);
                 made += 1;
@@ -280,14 +292,22 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
         Layout::Shards(size) => {
             let count = n.div_ceil(size);
             let wanted_shard = |k: u64| k % shard_k == shard_i;
-            let mut writer = shards::IndexWriter::new(&opts.out, &shards::index_file_name(opts.shard)).map_err(CliError::Failed)?;
-            let mut resumed = 0;
-            let on_shard = |k: u64, records: &[Record], lines: &str| {
-                records.iter().for_each(|r| tally.add(r));
-                resumed += records.len();
-                writer.add(k, lines)
+            let mut writer = match discard {
+                true => None,
+                false => Some(shards::IndexWriter::new(&opts.out, &shards::index_file_name(opts.shard)).map_err(CliError::Failed)?),
             };
-            let existing = shards::scan(&opts.out, &settings, n, size, wanted_shard, on_shard).map_err(CliError::Input)?;
+            let mut resumed = 0;
+            let existing = match &mut writer {
+                None => shards::Existing { done: Vec::new(), missing: Vec::new(), removed_temps: 0 },
+                Some(writer) => {
+                    let on_shard = |k: u64, records: &[Record], lines: &str| {
+                        records.iter().for_each(|r| tally.add(r));
+                        resumed += records.len();
+                        writer.add(k, lines)
+                    };
+                    shards::scan(&opts.out, &settings, n, size, wanted_shard, on_shard).map_err(CliError::Input)?
+                }
+            };
             if existing.removed_temps > 0 {
                 eprintln!("removed {} unfinished shard(s) of an interrupted run", existing.removed_temps);
             }
@@ -317,13 +337,15 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
             let work = |arena: &mut Arena, index: u64| store::draw(&settings, arena, index);
             // Shards in progress, each written as its samples come in.
             let mut writers: BTreeMap<u64, shards::ShardWriter> = BTreeMap::new();
-            let out = &opts.out;
+            let out = (!discard).then_some(opts.out.as_path());
             let collect = |(record, files): (Record, Option<store::Files>)| {
                 let k = record.index / size;
                 let shard = writers.entry(k).or_insert_with(|| shards::ShardWriter::new(out, k, shards::range(k, size, n)));
                 if let Some(lines) = shard.add(&record, files)? {
                     writers.remove(&k);
-                    writer.add(k, &lines)?;
+                    if let Some(writer) = &mut writer {
+                        writer.add(k, &lines)?;
+                    }
                 }
                 tally.add(&record);
                 made += 1;
@@ -332,7 +354,7 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
             // Finished samples wait in memory with their files: a few megabytes each with meshes.
             let queue = if opts.formats.mesh { jobs } else { 16 * jobs };
             pool(jobs, queue, slots, todo, index_of, work, collect, report.take())?;
-            index = Some(writer);
+            index = writer;
             (resumed, jobs)
         }
     };
@@ -350,30 +372,31 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
         jobs,
     };
     let props = opts.out.join(summary::file_name(opts.shard));
+    let summary_at = if discard { "none written (--out /dev/null)".to_string() } else { format!("summary in {}", props.display()) };
     if let Some(index) = index {
         index.finish().map_err(CliError::Failed)?;
     }
-    let mut set = OutputSet::default();
-    set.add(&summary::file_name(opts.shard), tally.properties(&about));
-    set.write_files_into(&opts.out).map_err(|e| CliError::Failed(format!("cannot write {}: {e}", props.display())))?;
+    if !discard {
+        let mut set = OutputSet::default();
+        set.add(&summary::file_name(opts.shard), tally.properties(&about));
+        set.write_files_into(&opts.out).map_err(|e| CliError::Failed(format!("cannot write {}: {e}", props.display())))?;
+    }
 
     let failed = tally.failed();
     let rate = if seconds > 0.0 { made as f64 / seconds } else { 0.0 };
     eprintln!(
-        "{}: {} samples ({made} made in {seconds:.2} s, {rate:.0}/s; {resumed} already there); {} designs rejected and drawn again; summary in {}",
+        "{}: {} samples ({made} made in {seconds:.2} s, {rate:.0}/s; {resumed} already there); {} designs rejected and drawn again; {summary_at}",
         opts.out.display(),
         tally.samples(),
         tally.rejected(),
-        props.display()
     );
     if !failed.is_empty() {
         let shown: Vec<&str> = failed.iter().take(10).map(String::as_str).collect();
         return Err(CliError::Failed(format!(
-            "{} sample(s) had every one of {MAX_ATTEMPTS} designs rejected: {}{} (see {})",
+            "{} sample(s) had every one of {MAX_ATTEMPTS} designs rejected: {}{} ({summary_at})",
             failed.len(),
             shown.join(", "),
             if failed.len() > shown.len() { ", ..." } else { "" },
-            props.display()
         )));
     }
     Ok(0)

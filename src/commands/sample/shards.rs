@@ -175,17 +175,17 @@ pub struct ShardWriter {
     waiting: BTreeMap<u64, (Option<String>, Option<Files>)>,
     /// Index lines of the samples written, in index order.
     lines: String,
-    file: Option<io::BufWriter<fs::File>>,
-    tmp: PathBuf,
-    target: PathBuf,
+    file: Option<Box<dyn Write>>,
+    /// `None`: the bytes are made and discarded (`--out /dev/null`).
+    paths: Option<(PathBuf, PathBuf)>,
 }
 
 impl ShardWriter {
-    /// Shard `k` of `dir`, holding the samples of `range`.
-    pub fn new(dir: &Path, k: u64, range: std::ops::Range<u64>) -> ShardWriter {
+    /// Shard `k` of `dir` (`None`: discarded as it is made), holding the samples of `range`.
+    pub fn new(dir: Option<&Path>, k: u64, range: std::ops::Range<u64>) -> ShardWriter {
         let next = range.start;
-        let (tmp, target) = (dir.join(tmp_name(k)), dir.join(shard_name(k)));
-        ShardWriter { k, range, next, waiting: BTreeMap::new(), lines: String::new(), file: None, tmp, target }
+        let paths = dir.map(|dir| (dir.join(tmp_name(k)), dir.join(shard_name(k))));
+        ShardWriter { k, range, next, waiting: BTreeMap::new(), lines: String::new(), file: None, paths }
     }
 
     /// Takes a sample's record and files (`None`: every design was rejected, no
@@ -195,8 +195,9 @@ impl ShardWriter {
         self.waiting.insert(record.index, (index_line(record, self.k), files));
         self.write_ready().map_err(|e| {
             self.file = None;
-            let _ = fs::remove_file(&self.tmp);
-            format!("cannot write {}: {e}", self.target.display())
+            let (tmp, target) = self.paths.as_ref().expect("only files fail");
+            let _ = fs::remove_file(tmp);
+            format!("cannot write {}: {e}", target.display())
         })
     }
 
@@ -221,15 +222,20 @@ impl ShardWriter {
         }
         let out = self.open()?;
         out.write_all(&[0; 2 * BLOCK])?;
-        let file = self.file.take().expect("opened").into_inner().map_err(io::IntoInnerError::into_error)?;
-        drop(file);
-        fs::rename(&self.tmp, &self.target)?;
+        out.flush()?;
+        self.file = None;
+        if let Some((tmp, target)) = &self.paths {
+            fs::rename(tmp, target)?;
+        }
         Ok(Some(std::mem::take(&mut self.lines)))
     }
 
-    fn open(&mut self) -> io::Result<&mut io::BufWriter<fs::File>> {
+    fn open(&mut self) -> io::Result<&mut Box<dyn Write>> {
         if self.file.is_none() {
-            self.file = Some(io::BufWriter::with_capacity(1 << 20, fs::File::create(&self.tmp)?));
+            self.file = Some(match &self.paths {
+                Some((tmp, _)) => Box::new(io::BufWriter::with_capacity(1 << 20, fs::File::create(tmp)?)),
+                None => Box::new(io::sink()),
+            });
         }
         Ok(self.file.as_mut().expect("just opened"))
     }
@@ -524,7 +530,7 @@ mod tests {
             }),
             rejections: vec![],
         };
-        let mut w = ShardWriter::new(&dir, 2, 20..24);
+        let mut w = ShardWriter::new(Some(&dir), 2, 20..24);
         // 22 finishes first, 21 had every design rejected.
         assert_eq!(w.add(&record(22, true), Some(files(22))).unwrap(), None);
         assert_eq!(w.add(&record(20, true), Some(files(20))).unwrap(), None);
