@@ -39,7 +39,7 @@ fn main() {
 }
 
 /// Samples per run of the disk-against-sink comparison, and its rounds.
-const SINK_SAMPLES: u64 = 20_000;
+const SINK_SAMPLES: u64 = 50_000;
 const SINK_ROUNDS: usize = 5;
 
 /// Prints the speed of writing shards to disk against discarding them.

@@ -747,7 +747,7 @@ fn place_marker(seg: &Segment, ccw: bool, poly: &[Vec2], taken: &[BBox]) -> (Vec
 }
 
 /// Whether `p` lies inside the closed polygon (even-odd rule).
-fn inside(poly: &[Vec2], p: Vec2) -> bool {
+pub(super) fn inside(poly: &[Vec2], p: Vec2) -> bool {
     let mut c = false;
     for k in 0..poly.len() {
         let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);

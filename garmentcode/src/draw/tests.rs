@@ -242,17 +242,6 @@ fn polygon(sheet: &Sheet, panel: usize) -> Vec<Vec2> {
     pts
 }
 
-fn inside(poly: &[Vec2], p: Vec2) -> bool {
-    let mut c = false;
-    for k in 0..poly.len() {
-        let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
-        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
-            c = !c;
-        }
-    }
-    c
-}
-
 /// The marker of each stitched edge sits inside its panel (but for those moved
 /// outside with a leader line), next to a point of its edge. Panels that intersect
 /// themselves (curves crossing a neighbouring edge; flagged in the cases'
@@ -275,7 +264,7 @@ fn markers_point_into_their_panel() {
             assert!(on_edge, "{name}: marker of stitch {} on {} edge {} is not anchored on its edge", m.stitch, q.name, m.edge);
             let probe = m.anchor + (m.centre - m.anchor).normalize() * 0.3;
             assert!(
-                inside(&polygon(&sheet, m.panel), probe) && inside(&polygon(&sheet, m.panel), m.centre),
+                super::layout::inside(&polygon(&sheet, m.panel), probe) && super::layout::inside(&polygon(&sheet, m.panel), m.centre),
                 "{name}: marker of stitch {} on {} edge {} is outside",
                 m.stitch,
                 q.name,
