@@ -701,7 +701,7 @@ impl PyPattern {
     fn mesh(&self, py: Python<'_>, resolution: f64) -> PyResult<PyMesh> {
         let mesh = py
             .detach(|| BoxMesh::new(&self.pattern, resolution))
-            .map_err(|e| PatternError::new_err(format!("{}: cannot mesh: {e}", self.pattern.name)))?;
+            .map_err(|e| PatternError::new_err(format!("{}: cannot mesh the pattern: {e}", self.pattern.name)))?;
         Ok(PyMesh { mesh })
     }
 

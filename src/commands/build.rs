@@ -72,7 +72,7 @@ pub fn files(
         set.add("pattern.png", garmentcode::draw::to_png(pattern, draw).map_err(|e| e.to_string())?);
     }
     if formats.contains(&BuildFormat::Mesh) {
-        let mesh = BoxMesh::new(pattern, mesh_resolution).map_err(|e| format!("cannot mesh: {e}"))?;
+        let mesh = BoxMesh::new(pattern, mesh_resolution).map_err(|e| format!("cannot mesh the pattern: {e}"))?;
         for (file, bytes) in mesh.files() {
             set.add(&file, bytes);
         }

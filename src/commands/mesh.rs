@@ -33,7 +33,7 @@ pub fn run(args: MeshArgs) -> Result<i32, CliError> {
     if pattern.name.is_empty() || pattern.name.contains(['/', '\\']) {
         return Err(CliError::Usage(format!("--name: '{}' is not a file name prefix", pattern.name)));
     }
-    let mesh = BoxMesh::new(&pattern, args.resolution).map_err(|e| CliError::Input(format!("{file}: cannot mesh: {e}")))?;
+    let mesh = BoxMesh::new(&pattern, args.resolution).map_err(|e| CliError::Input(format!("{file}: cannot mesh the pattern: {e}")))?;
     let mut set = OutputSet::default();
     set.add(&format!("{}_specification.json", pattern.name), pattern.to_json().map_err(|e| CliError::Input(format!("{file}: {e}")))?);
     for (name, bytes) in mesh.files() {
