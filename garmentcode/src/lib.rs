@@ -57,6 +57,8 @@ mod remap;
 mod rotation;
 mod seq;
 mod stitch;
+#[cfg(test)]
+mod test_data;
 
 // Function namespaces.
 pub mod curves;

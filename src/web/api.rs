@@ -685,8 +685,8 @@ pub fn mesh_text(input: &Json) -> ApiResult<String> {
     let (_, body) = body_from(input.get("body"))?;
     let design = typed_design(&values)?;
     let built = ARENA.with(|a| garments::build::build_in(&mut a.borrow_mut(), &design, &body, &name)).map_err(|e| e.to_string());
-    let mesh = built
-        .and_then(|b| garmentcode::mesh::BoxMesh::new(&b.pattern, resolution).map_err(|e| format!("cannot mesh the pattern: {e}")));
+    let mesh =
+        built.and_then(|b| garmentcode::mesh::BoxMesh::new(&b.pattern, resolution).map_err(|e| format!("cannot mesh the pattern: {e}")));
     Ok(match mesh {
         Err(reason) => json!({ "ok": false, "name": name, "error": reason, "problems": [reason] }).to_string(),
         Ok(m) => mesh_json(&m),

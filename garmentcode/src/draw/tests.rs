@@ -1,4 +1,4 @@
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use super::layout::{self, Shape, Sheet};
 use super::svg::{escape, num};
@@ -6,6 +6,7 @@ use super::{DrawOptions, to_png, to_svg};
 use crate::error::Error;
 use crate::math::Vec2;
 use crate::pattern::{Curvature, EdgeSpec, PanelSpec, Pattern, StitchSide, StitchSpec};
+use crate::test_data::{cases, patterns_in};
 
 fn edge(a: usize, b: usize, curvature: Option<Curvature>) -> EdgeSpec {
     EdgeSpec { endpoints: [a, b], label: None, curvature }
@@ -156,31 +157,6 @@ fn broken_loop_starts_a_new_subpath() {
 
 // ---------------------------------------------------------------------------
 // Reference cases
-
-/// The patterns in the folders of `dir` (relative to the workspace's test data)
-/// that hold a `specification.json`, by folder name.
-fn patterns_in(dir: &str) -> Vec<(String, Pattern)> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data").join(dir);
-    let mut dirs: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.join("specification.json").exists())
-        .collect();
-    dirs.sort();
-    dirs.into_iter()
-        .map(|d| {
-            let name = d.file_name().unwrap().to_string_lossy().to_string();
-            let mut p = Pattern::from_json(&std::fs::read_to_string(d.join("specification.json")).unwrap()).unwrap();
-            p.name = name.clone();
-            (name, p)
-        })
-        .collect()
-}
-
-/// The reference cases.
-fn cases() -> Vec<(String, Pattern)> {
-    patterns_in("cases")
-}
 
 /// Width and height from a PNG's IHDR chunk.
 fn png_size(png: &[u8]) -> (u32, u32) {

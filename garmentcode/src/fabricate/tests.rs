@@ -4,25 +4,7 @@ use super::geom::{self, Rect};
 use super::sheet::{self, Prim};
 use super::*;
 use crate::math::Vec2;
-use std::path::{Path, PathBuf};
-
-fn cases() -> Vec<(String, Pattern)> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data/cases");
-    let mut dirs: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.join("specification.json").exists())
-        .collect();
-    dirs.sort();
-    assert!(dirs.len() > 40, "the reference cases are missing");
-    dirs.into_iter()
-        .map(|d| {
-            let name = d.file_name().unwrap().to_string_lossy().to_string();
-            let p = Pattern::from_json(&std::fs::read_to_string(d.join("specification.json")).unwrap()).unwrap();
-            (name, p)
-        })
-        .collect()
-}
+use crate::test_data::cases;
 
 fn opts(name: &str) -> PrintOptions {
     PrintOptions { garment: name.into(), size: "mean_all".into(), ..Default::default() }
