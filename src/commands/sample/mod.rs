@@ -257,8 +257,7 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
     // large the dataset.
     let mut tally = summary::Tally::new(&body_names);
     let mut made = 0usize;
-    let mut index = None;
-    let (resumed, jobs) = match opts.layout {
+    let (resumed, jobs, index) = match opts.layout {
         Layout::Folders => {
             let existing = if discard {
                 store::Existing { finished: Vec::new(), removed_temps: 0 }
@@ -287,7 +286,7 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
                 Ok(())
             };
             pool(jobs, 16 * jobs, slots, todo, index_of, work, collect, report.take())?;
-            (finished.len(), jobs)
+            (finished.len(), jobs, None)
         }
         Layout::Shards(size) => {
             let count = n.div_ceil(size);
@@ -354,8 +353,7 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
             // Finished samples wait in memory with their files: a few megabytes each with meshes.
             let queue = if opts.formats.mesh { jobs } else { 16 * jobs };
             pool(jobs, queue, slots, todo, index_of, work, collect, report.take())?;
-            index = writer;
-            (resumed, jobs)
+            (resumed, jobs, writer)
         }
     };
     let seconds = start.elapsed().as_secs_f64();

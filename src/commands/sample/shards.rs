@@ -276,7 +276,9 @@ pub struct IndexWriter {
     /// `shard → (offset, length)` in the parts file.
     segments: BTreeMap<u64, (u64, u64)>,
     end: u64,
+    /// The index, and the temporary name it is written to.
     target: PathBuf,
+    tmp: PathBuf,
 }
 
 impl IndexWriter {
@@ -294,7 +296,8 @@ impl IndexWriter {
         }
         let parts_path = dir.join(format!(".{name}.parts-{}", std::process::id()));
         let parts = io::BufWriter::new(fs::File::create(&parts_path).map_err(fail)?);
-        Ok(IndexWriter { parts, parts_path, segments: BTreeMap::new(), end: 0, target: dir.join(name) })
+        let (target, tmp) = (dir.join(name), dir.join(format!(".{name}.tmp-{}", std::process::id())));
+        Ok(IndexWriter { parts, parts_path, segments: BTreeMap::new(), end: 0, target, tmp })
     }
 
     /// The lines of shard `k`.
@@ -311,23 +314,19 @@ impl IndexWriter {
         let fail = |e: io::Error| format!("cannot write {}: {e}", self.target.display());
         self.parts.flush().map_err(fail)?;
         let mut parts = fs::File::open(&self.parts_path).map_err(fail)?;
-        let tmp = self.target.with_file_name(format!(
-            ".{}.tmp-{}",
-            self.target.file_name().expect("a file name").to_string_lossy(),
-            std::process::id()
-        ));
+        let tmp = &self.tmp;
         let mut write = || -> io::Result<()> {
-            let mut out = io::BufWriter::new(fs::File::create(&tmp)?);
+            let mut out = io::BufWriter::new(fs::File::create(tmp)?);
             for &(offset, len) in self.segments.values() {
                 parts.seek(io::SeekFrom::Start(offset))?;
                 io::copy(&mut (&mut parts).take(len), &mut out)?;
             }
             out.into_inner().map_err(io::IntoInnerError::into_error)?.sync_all()?;
-            fs::rename(&tmp, &self.target)
+            fs::rename(tmp, &self.target)
         };
         let result = write();
         if result.is_err() {
-            let _ = fs::remove_file(&tmp);
+            let _ = fs::remove_file(tmp);
         }
         result.map_err(fail)
     }
