@@ -257,6 +257,7 @@ pub use garmentcode_derive::component;
 pub mod __private {
     pub use crate::arena::{Arena, InterfaceId, PanelId, StitchRule};
     pub use crate::component::{Component, Interfaces, Node, PanelPart, Part, Parts, Slot};
+    pub use crate::memo::clear as clear_memo;
     pub use crate::params::overrides::{Override, OverrideNumber, OverrideProblem, apply_overrides, override_number, override_problem};
     pub use crate::params::spec::{FieldInfo, FieldShape};
     pub use crate::params::spec::{Kind, ParamSpec, Range, Value};

@@ -100,9 +100,9 @@ pub(crate) fn tangent_fit(key: TangentFitKey, make: impl FnOnce() -> [f64; 2]) -
     TANGENT_FITS.with(|table| lookup(table, key, make, |r| *r))
 }
 
-/// Forget every entry (tests: to compute afresh).
-#[cfg(test)]
-pub(crate) fn clear() {
+/// Forget every entry of this thread's tables (tests and benchmarks: to compute
+/// afresh; results do not change).
+pub fn clear() {
     EDGE_POINTS.with(|c| c.borrow_mut().clear());
     INVERSIONS.with(|c| c.borrow_mut().clear());
     TANGENT_FITS.with(|c| c.borrow_mut().clear());

@@ -13,7 +13,11 @@
 //! - cold stream: the first build of each design, the set built in order on a
 //!   thread that built nothing before (as a dataset run meets new designs);
 //! - cold process: the first build in a fresh process (the benchmark runs its own
-//!   executable for a few dozen designs of the set, each building one design once);
+//!   executable for a few dozen designs of the set, each building one design), by
+//!   step (read, build, JSON), and the same design built again in that process with
+//!   the geometry memo emptied: the build and JSON steps then do the same work as the
+//!   first time (the read uses the space's file layout from the second file on), so
+//!   the difference is the processor's cold caches and predictors;
 //!
 //! with the medians' ratios, and the speed-up against the reference's figures on
 //! this machine kind (median 0.10 s, mean 0.48 s; with sleeves median 1.4 s).
@@ -109,13 +113,43 @@ fn summary(label: &str, mut times: Vec<f64>, reference_median: f64, reference_me
 }
 
 /// Environment variable that makes the benchmark's executable a child process
-/// building one design of the set once (`INDEX:BODY`, the design's sample index in
-/// the seed's stream and its body's index) and printing the time in nanoseconds.
+/// building one design of the set (`INDEX:BODY`, the design's sample index in the
+/// seed's stream and its body's index) and printing its times in nanoseconds.
 const COLD_PROCESS_VAR: &str = "GARMENTCODE_BENCH_COLD_DESIGN";
 
+/// Times of one design file to JSON text, by step, in seconds.
+#[derive(Clone, Copy)]
+struct Steps {
+    read: f64,
+    build: f64,
+    json: f64,
+}
+
+impl Steps {
+    fn total(&self) -> f64 {
+        self.read + self.build + self.json
+    }
+}
+
+/// Design file text to pattern JSON text on a new arena, timed by step.
+fn run_steps(case: &Case) -> Steps {
+    let start = Instant::now();
+    let design: Design = read_design(&case.yaml, "design.yaml", space()).expect("valid design file");
+    let read = start.elapsed().as_secs_f64();
+    let built = garments::build::build_in(&mut Arena::new(), &design, &case.body, "design").expect("the set holds buildable designs");
+    let build = start.elapsed().as_secs_f64() - read;
+    std::hint::black_box(built.pattern.to_json().expect("pattern serialises").len());
+    let json = start.elapsed().as_secs_f64() - read - build;
+    Steps { read, build, json }
+}
+
 /// The child of the cold-process measurement: the design is drawn and written to
-/// YAML text (untimed), then read, built and written to JSON once, on a new arena,
-/// as the first build of the process.
+/// YAML text (untimed), then read, built and written to JSON as the first build of
+/// the process; then twice more, the geometry memo emptied before each, so that
+/// these repeat the first build's work (the same instructions; the read, though,
+/// uses the space's file layout from the second file on) with the processor's
+/// caches and predictors warm. Prints six numbers: the first run's steps (read,
+/// build, JSON) and the third run's.
 fn cold_process_child(spec: &str) {
     let (index, body) = spec.split_once(':').expect("INDEX:BODY");
     let (index, body): (u64, usize) = (index.parse().expect("sample index"), body.parse().expect("body index"));
@@ -127,16 +161,20 @@ fn cold_process_child(spec: &str) {
         index,
         with_sleeves: false,
     };
-    let start = Instant::now();
-    let len = run(&mut Arena::new(), &case);
-    let ns = start.elapsed().as_nanos();
-    std::hint::black_box(len);
-    println!("{ns}");
+    let first = run_steps(&case);
+    let mut again = first;
+    for _ in 0..2 {
+        garmentcode::__private::clear_memo();
+        again = run_steps(&case);
+    }
+    let ns = |s: f64| (s * 1e9).round() as u64;
+    println!("{} {} {} {} {} {}", ns(first.read), ns(first.build), ns(first.json), ns(again.read), ns(again.build), ns(again.json));
 }
 
 /// The first build in a fresh process of `count` designs spread over the set, one
-/// child process each: the time of each.
-fn cold_process(set: &[Case], count: usize) -> Vec<f64> {
+/// child process each: per design, the first build's steps and the same build's
+/// when repeated in that process without the memo.
+fn cold_process(set: &[Case], count: usize) -> Vec<(Steps, Steps)> {
     let exe = std::env::current_exe().expect("the benchmark's executable");
     let bodies = garments::builtin::BODIES.len();
     (0..count)
@@ -147,8 +185,12 @@ fn cold_process(set: &[Case], count: usize) -> Vec<f64> {
                 .output()
                 .expect("the benchmark runs itself");
             assert!(out.status.success(), "child failed: {}", String::from_utf8_lossy(&out.stderr));
-            let ns: f64 = String::from_utf8_lossy(&out.stdout).trim().parse().expect("the child prints nanoseconds");
-            ns * 1e-9
+            let t: Vec<f64> = String::from_utf8_lossy(&out.stdout)
+                .split_whitespace()
+                .map(|w| w.parse::<f64>().expect("the child prints nanoseconds") * 1e-9)
+                .collect();
+            assert_eq!(t.len(), 6, "the child prints six times");
+            (Steps { read: t[0], build: t[1], json: t[2] }, Steps { read: t[3], build: t[4], json: t[5] })
         })
         .collect()
 }
@@ -198,14 +240,27 @@ fn main() {
     summary("all designs", cold.clone(), 0.10, Some(0.48));
     summary("with sleeves or hoods", sleeved(&cold), 1.4, None);
     println!("cold process: the first build in a fresh process, {CHILDREN} designs");
-    summary("all designs", process.clone(), 0.10, Some(0.48));
-    let (w, c, p) = (median(warm), median(cold), median(process));
+    let first: Vec<Steps> = process.iter().map(|p| p.0).collect();
+    let repeated: Vec<Steps> = process.iter().map(|p| p.1).collect();
+    summary("all designs", first.iter().map(Steps::total).collect(), 0.10, Some(0.48));
+    let steps = |s: &[Steps]| {
+        let m = |f: fn(&Steps) -> f64| median(s.iter().map(f).collect()) * 1e3;
+        format!("read {:.4} ms, build {:.4} ms, JSON {:.4} ms", m(|s| s.read), m(|s| s.build), m(|s| s.json))
+    };
+    println!("{:<22} medians by step: {}", "", steps(&first));
+    println!("the same designs built again in their process, the memo emptied (the same build work, warm processor)");
+    summary("all designs", repeated.iter().map(Steps::total).collect(), 0.10, Some(0.48));
+    println!("{:<22} medians by step: {}", "", steps(&repeated));
+    let (w, c, p, r) =
+        (median(warm), median(cold), median(first.iter().map(Steps::total).collect()), median(repeated.iter().map(Steps::total).collect()));
     println!(
-        "medians: warm {:.4} ms, cold stream {:.4} ms (×{:.2} warm), cold process {:.4} ms (×{:.2} warm)",
+        "medians: warm {:.4} ms, cold stream {:.4} ms (×{:.2} warm), cold process {:.4} ms (×{:.2} warm), its repeat without the memo {:.4} ms (×{:.2} warm)",
         w * 1e3,
         c * 1e3,
         c / w,
         p * 1e3,
-        p / w
+        p / w,
+        r * 1e3,
+        r / w
     );
 }
