@@ -375,7 +375,7 @@ pub struct SampleArgs {
     /// Dataset layout: a folder per sample (default), or tar shards of N samples (default 1000).
     #[arg(long, value_name = "folders|shards[:N]", conflicts_with = "replay")]
     pub layout: Option<String>,
-    /// Unpack shards into DIR as the folder layout (a folder per sample).
+    /// Unpack shards into DIR as the folder layout (a folder per sample, and the dataset's summary when the shards come from one folder).
     #[arg(long, value_name = "SHARD.tar", num_args = 1.., conflicts_with_all = ["n", "replay", "layout", "shard", "design_space", "bodies", "formats", "jobs"])]
     pub unpack: Vec<PathBuf>,
 }

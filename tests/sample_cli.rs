@@ -367,9 +367,17 @@ fn shards_hold_the_folder_dataset_and_unpack_to_it() {
     // Unpacked, the shards are the folder layout byte for byte; the summaries agree
     // but for the run section.
     unpack(&sharded, shards.keys(), &unpacked);
-    assert_eq!(samples(&unpacked), samples(&folders));
+    assert_eq!(tree(&unpacked), tree(&folders), "the unpacked shards are not the folder layout");
     assert_whole(&unpacked, 5);
     assert_eq!(tree(&sharded)["dataset_properties.yaml"], tree(&folders)["dataset_properties.yaml"]);
+    // One shard on its own: its samples, with the dataset's summary.
+    let one = dir.join("one");
+    unpack(&sharded, ["shard-000001.tar".to_string()].iter(), &one);
+    let expected: BTreeMap<String, Vec<u8>> = tree(&folders)
+        .into_iter()
+        .filter(|(k, _)| k.starts_with("dataset_properties") || (10..20).any(|i| k.starts_with(&format!("rand_{i:07}/"))))
+        .collect();
+    assert_eq!(tree(&one), expected);
 }
 
 #[test]
@@ -456,6 +464,10 @@ fn bad_shard_input_is_a_clear_error() {
     fail(&["--unpack", s(&not_tar), "--out", s(&dir.join("u1"))], "not a tar archive");
     fail(&["--unpack", s(&dir.join("missing.tar")), "--out", s(&dir.join("u2"))], "cannot read");
     fail(&["--unpack", s(&shard), "--out", s(&dir.join("u3")), "--n", "3"], "cannot be used with");
+    // Every shard is checked before anything is unpacked.
+    let u4 = dir.join("u4");
+    fail(&["--unpack", s(&out.join("shard-000000.tar")), s(&shard), "--out", s(&u4)], "shard-000001.tar");
+    assert!(!u4.exists(), "a run that failed wrote {}", u4.display());
 }
 
 #[test]

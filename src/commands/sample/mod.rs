@@ -525,6 +525,7 @@ fn pool<T: Send>(
 
 /// `--unpack SHARD.tar ... --out DIR`.
 fn unpack(shards: &[PathBuf], out: &Path) -> Result<i32, CliError> {
+    shards::check_archives(shards).map_err(CliError::Input)?;
     prepare_out(out)?;
     let count = shards::unpack(shards, out).map_err(CliError::Input)?;
     eprintln!("{}: {count} sample folder(s) from {} shard(s)", out.display(), shards.len());

@@ -57,11 +57,14 @@ fn folder_file_name(key: &str, rest: &str) -> String {
     if rest == "specification.json" || rest.starts_with("pattern.") || mesh_file { format!("{key}_{rest}") } else { rest.to_string() }
 }
 
-/// Split a member name into its sample index, key and suffix.
+/// Split a member name into its sample index, key and suffix. The suffix is a
+/// plain file name as this tool writes them (letters, digits, `_ - .`, not
+/// starting or ending with a dot), so unpacking cannot write anywhere else.
 fn split_member(name: &str) -> Option<(u64, &str, &str)> {
     let (key, rest) = name.split_once('.')?;
     let index = store::index_of(key)?;
-    (!rest.is_empty() && !rest.contains('/')).then_some((index, key, rest))
+    let plain = rest.bytes().all(|b| b.is_ascii_alphanumeric() || b"_-.".contains(&b));
+    (plain && !rest.is_empty() && !rest.starts_with('.') && !rest.ends_with('.')).then_some((index, key, rest))
 }
 
 /// Write `value` as zero-padded octal into `field`, ending with NUL.
@@ -119,43 +122,117 @@ fn read_octal(field: &[u8]) -> Option<u64> {
     u64::from_str_radix(text, 8).ok()
 }
 
-/// The regular files of a ustar archive, in order. Errors name what is wrong
-/// (not a tar file, a bad checksum, a truncated member).
-fn untar(bytes: &[u8]) -> Result<Vec<(String, &[u8])>, String> {
-    let mut out = Vec::new();
-    let mut at = 0;
-    loop {
-        let Some(h) = bytes.get(at..at + BLOCK) else {
-            return Err(if at == 0 {
-                "not a tar archive (too short)".into()
-            } else {
-                "truncated: the archive ends without its end blocks".into()
-            });
-        };
-        if h.iter().all(|&b| b == 0) {
-            return Ok(out);
-        }
-        if &h[257..262] != b"ustar" {
-            return Err(format!("not a tar archive (no ustar header at byte {at})"));
-        }
-        let stored = read_octal(&h[148..156]).ok_or("a header with an unreadable checksum")?;
-        let sum: u64 = h.iter().enumerate().map(|(i, &b)| if (148..156).contains(&i) { u64::from(b' ') } else { u64::from(b) }).sum();
-        if stored != sum {
-            return Err(format!("a damaged header at byte {at} (checksum)"));
-        }
-        let cut = |f: &[u8]| String::from_utf8_lossy(&f[..f.iter().position(|&b| b == 0).unwrap_or(f.len())]).into_owned();
-        let (prefix, name) = (cut(&h[345..500]), cut(&h[..100]));
-        let name = if prefix.is_empty() { name } else { format!("{prefix}/{name}") };
-        let size = read_octal(&h[124..136]).ok_or_else(|| format!("{name}: an unreadable size"))? as usize;
-        let start = at + BLOCK;
-        let data = bytes.get(start..start + size).ok_or_else(|| format!("{name}: truncated (the archive ends inside it)"))?;
-        match h[156] {
-            b'0' | 0 => out.push((name, data)),
-            b'5' => {}
-            other => return Err(format!("{name}: not a regular file (tar type '{}')", other as char)),
-        }
-        at = start + size.next_multiple_of(BLOCK);
+/// One regular file of a ustar archive: its name and where its bytes are.
+struct Member {
+    name: String,
+    start: u64,
+    size: u64,
+}
+
+/// A ustar archive read header by header. A member's bytes are read only when
+/// asked for ([`read`](Self::read)) and skipped otherwise, so memory holds one
+/// member at most whatever the archive's size (a shard of samples with meshes is
+/// several GB). Errors name what is wrong: not a tar file, a bad checksum, a
+/// truncated member.
+struct TarReader<R> {
+    r: io::BufReader<R>,
+    /// The archive's length.
+    len: u64,
+    /// Where the next header is.
+    next: u64,
+    /// Where `r` is.
+    pos: u64,
+}
+
+impl TarReader<fs::File> {
+    /// The archive at `path`.
+    fn open(path: &Path) -> Result<Self, String> {
+        let file = fs::File::open(path).map_err(|e| format!("cannot read: {e}"))?;
+        TarReader::new(file).map_err(|e| format!("cannot read: {e}"))
     }
+}
+
+impl<R: io::Read + io::Seek> TarReader<R> {
+    fn new(mut r: R) -> io::Result<Self> {
+        let len = r.seek(io::SeekFrom::End(0))?;
+        r.seek(io::SeekFrom::Start(0))?;
+        Ok(TarReader { r: io::BufReader::with_capacity(1 << 16, r), len, next: 0, pos: 0 })
+    }
+
+    /// `len` bytes from `at` into `buf`.
+    fn read_at(&mut self, at: u64, buf: &mut [u8]) -> Result<(), String> {
+        use io::Read;
+        let fail = |e: io::Error| format!("cannot read: {e}");
+        if at != self.pos {
+            let offset = i64::try_from(at).ok().zip(i64::try_from(self.pos).ok()).map(|(a, p)| a - p).ok_or("an archive too large")?;
+            self.r.seek_relative(offset).map_err(fail)?;
+        }
+        self.r.read_exact(buf).map_err(fail)?;
+        self.pos = at + buf.len() as u64;
+        Ok(())
+    }
+
+    /// The next regular file (directories are passed over); `None` at the end
+    /// blocks.
+    fn next_member(&mut self) -> Result<Option<Member>, String> {
+        loop {
+            let at = self.next;
+            if self.len.saturating_sub(at) < BLOCK as u64 {
+                return Err(if at == 0 {
+                    "not a tar archive (too short)".into()
+                } else {
+                    "truncated: the archive ends without its end blocks".into()
+                });
+            }
+            let mut h = [0u8; BLOCK];
+            self.read_at(at, &mut h)?;
+            if h.iter().all(|&b| b == 0) {
+                return Ok(None);
+            }
+            if &h[257..262] != b"ustar" {
+                return Err(format!("not a tar archive (no ustar header at byte {at})"));
+            }
+            let stored = read_octal(&h[148..156]).ok_or("a header with an unreadable checksum")?;
+            let sum: u64 = h.iter().enumerate().map(|(i, &b)| if (148..156).contains(&i) { u64::from(b' ') } else { u64::from(b) }).sum();
+            if stored != sum {
+                return Err(format!("a damaged header at byte {at} (checksum)"));
+            }
+            let cut = |f: &[u8]| String::from_utf8_lossy(&f[..f.iter().position(|&b| b == 0).unwrap_or(f.len())]).into_owned();
+            let (prefix, name) = (cut(&h[345..500]), cut(&h[..100]));
+            let name = if prefix.is_empty() { name } else { format!("{prefix}/{name}") };
+            let size = read_octal(&h[124..136]).ok_or_else(|| format!("{name}: an unreadable size"))?;
+            let start = at + BLOCK as u64;
+            if size > self.len - start {
+                return Err(format!("{name}: truncated (the archive ends inside it)"));
+            }
+            self.next = start + size.next_multiple_of(BLOCK as u64);
+            match h[156] {
+                b'0' | 0 => return Ok(Some(Member { name, start, size })),
+                b'5' => {}
+                other => return Err(format!("{name}: not a regular file (tar type '{}')", other as char)),
+            }
+        }
+    }
+
+    /// The bytes of `m`, a member of this archive.
+    fn read(&mut self, m: &Member) -> Result<Vec<u8>, String> {
+        let size = usize::try_from(m.size).map_err(|_| format!("{}: too large to read", m.name))?;
+        let mut bytes = vec![0; size];
+        self.read_at(m.start, &mut bytes)?;
+        Ok(bytes)
+    }
+}
+
+/// Every regular file of an archive in memory, in order (tests).
+#[cfg(test)]
+fn untar(bytes: &[u8]) -> Result<Vec<(String, Vec<u8>)>, String> {
+    let mut tar = TarReader::new(io::Cursor::new(bytes)).map_err(|e| e.to_string())?;
+    let mut out = Vec::new();
+    while let Some(m) = tar.next_member()? {
+        let bytes = tar.read(&m)?;
+        out.push((m.name, bytes));
+    }
+    Ok(out)
 }
 
 /// Sample indices of shard `k`: `k·size .. min((k+1)·size, n)`.
@@ -384,11 +461,12 @@ pub fn scan(
 /// sample with its record (of this dataset) and the files of these formats.
 fn check_shard(path: &Path, s: &Settings, range: std::ops::Range<u64>) -> Result<Vec<Record>, String> {
     let show = path.display();
-    let bytes = fs::read(path).map_err(|e| format!("{show}: cannot read: {e}"))?;
-    let members = untar(&bytes).map_err(|e| format!("{show}: a damaged shard ({e}); delete it and rerun to make it again"))?;
-    let mut keys: std::collections::BTreeMap<u64, Vec<&str>> = std::collections::BTreeMap::new();
+    let damaged = |e: String| format!("{show}: a damaged shard ({e}); delete it and rerun to make it again");
+    let mut tar = TarReader::open(path).map_err(|e| format!("{show}: {e}"))?;
+    let mut keys: std::collections::BTreeMap<u64, Vec<String>> = std::collections::BTreeMap::new();
     let mut records = Vec::new();
-    for (name, data) in &members {
+    while let Some(member) = tar.next_member().map_err(damaged)? {
+        let name = &member.name;
         let Some((index, _key, rest)) = split_member(name) else {
             return Err(format!("{show}: '{name}' is not a sample file of this tool; choose another --out"));
         };
@@ -400,9 +478,10 @@ fn check_shard(path: &Path, s: &Settings, range: std::ops::Range<u64>) -> Result
                 range.end
             ));
         }
-        keys.entry(index).or_default().push(rest);
+        keys.entry(index).or_default().push(rest.to_string());
         if rest == store::INFO {
-            let text = std::str::from_utf8(data).map_err(|_| format!("{show}: {name} is not text"))?;
+            let data = tar.read(&member).map_err(damaged)?;
+            let text = std::str::from_utf8(&data).map_err(|_| format!("{show}: {name} is not text"))?;
             records.push(store::parse_info(text, &format_args!("{show}: {name}"), s, index)?);
         }
     }
@@ -422,30 +501,92 @@ fn check_shard(path: &Path, s: &Settings, range: std::ops::Range<u64>) -> Result
     Ok(records)
 }
 
+/// The samples of a shard in archive order: each sample's key and members. A
+/// sample's members must be together (as [`ShardWriter`] writes them), so that
+/// unpacking holds one sample at a time.
+fn shard_samples<R: io::Read + io::Seek>(tar: &mut TarReader<R>) -> Result<Vec<(String, Vec<Member>)>, String> {
+    let mut samples: Vec<(String, Vec<Member>)> = Vec::new();
+    let mut seen = std::collections::BTreeSet::new();
+    while let Some(member) = tar.next_member()? {
+        let Some((index, key, _)) = split_member(&member.name) else {
+            return Err(format!("'{}' is not a sample file of a garmentcode shard", member.name));
+        };
+        match samples.last_mut() {
+            Some((last, members)) if last == key => members.push(member),
+            _ => {
+                if !seen.insert(index) {
+                    return Err(format!("the files of {key} are not together, as garmentcode writes them"));
+                }
+                samples.push((key.to_string(), vec![member]));
+            }
+        }
+    }
+    if samples.is_empty() {
+        return Err("holds no sample".into());
+    }
+    Ok(samples)
+}
+
+/// Check that each of `shards` is a whole shard archive (headers only: what
+/// [`unpack`] needs), before anything is unpacked.
+pub fn check_archives(shards: &[PathBuf]) -> Result<(), String> {
+    for path in shards {
+        let show = path.display();
+        let mut tar = TarReader::open(path).map_err(|e| format!("{show}: {e}"))?;
+        shard_samples(&mut tar).map_err(|e| format!("{show}: {e}"))?;
+    }
+    Ok(())
+}
+
 /// `--unpack SHARD.tar ... --out DIR`: each sample of the shards as its folder
-/// (written as the folder layout writes it). Returns the number of samples.
+/// (written as the folder layout writes it), and the dataset's summaries
+/// (`dataset_properties*.yaml`) when the shards come from one folder that has
+/// them. Memory holds one sample. Returns the number of samples.
 pub fn unpack(shards: &[PathBuf], out: &Path) -> Result<usize, String> {
     let mut count = 0;
     for path in shards {
         let show = path.display();
-        let bytes = fs::read(path).map_err(|e| format!("{show}: cannot read: {e}"))?;
-        let members = untar(&bytes).map_err(|e| format!("{show}: {e}"))?;
-        let mut samples: std::collections::BTreeMap<u64, (String, Files)> = std::collections::BTreeMap::new();
-        for (name, data) in members {
-            let (index, key, rest) =
-                split_member(&name).ok_or_else(|| format!("{show}: '{name}' is not a sample file of a garmentcode shard"))?;
-            let entry = samples.entry(index).or_insert_with(|| (key.to_string(), Vec::new()));
-            entry.1.push((folder_file_name(key, rest), data.to_vec()));
-        }
-        if samples.is_empty() {
-            return Err(format!("{show}: holds no sample"));
-        }
-        for (key, files) in samples.values() {
-            store::write_folder(out, key, files).map_err(|e| format!("cannot write {}: {e}", out.join(key).display()))?;
+        let mut tar = TarReader::open(path).map_err(|e| format!("{show}: {e}"))?;
+        for (key, members) in shard_samples(&mut tar).map_err(|e| format!("{show}: {e}"))? {
+            let mut files = Vec::with_capacity(members.len());
+            for m in &members {
+                let (_, _, rest) = split_member(&m.name).expect("listed as a sample file");
+                files.push((folder_file_name(&key, rest), tar.read(m).map_err(|e| format!("{show}: {e}"))?));
+            }
+            store::write_folder(out, &key, &files).map_err(|e| format!("cannot write {}: {e}", out.join(&key).display()))?;
             count += 1;
         }
     }
+    copy_summaries(shards, out)?;
     Ok(count)
+}
+
+/// The summaries (`dataset_properties.yaml`, and a task's
+/// `dataset_properties_shard_I_of_K.yaml`) of the folder the shards come from, if
+/// they all come from one, copied into `out` (each written whole).
+fn copy_summaries(shards: &[PathBuf], out: &Path) -> Result<(), String> {
+    let dirs: std::collections::BTreeSet<PathBuf> =
+        shards.iter().filter_map(|p| Some(fs::canonicalize(p).ok()?.parent()?.to_path_buf())).collect();
+    let Some(dir) = dirs.first().filter(|_| dirs.len() == 1) else { return Ok(()) };
+    if fs::canonicalize(out).ok().as_ref() == Some(dir) {
+        return Ok(());
+    }
+    let Ok(entries) = fs::read_dir(dir) else { return Ok(()) };
+    let mut names: Vec<String> = entries
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with("dataset_properties") && n.ends_with(".yaml"))
+        .collect();
+    names.sort();
+    for name in names {
+        let (from, to, tmp) = (dir.join(&name), out.join(&name), out.join(format!(".{name}.tmp-{}", std::process::id())));
+        let result = fs::copy(&from, &tmp).and_then(|_| fs::rename(&tmp, &to));
+        if let Err(e) = result {
+            let _ = fs::remove_file(&tmp);
+            return Err(format!("cannot copy {} into {}: {e}", from.display(), out.display()));
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -461,6 +602,9 @@ mod tests {
             assert_eq!((index, k), (42, key));
             assert_eq!(folder_file_name(key, rest), f);
         }
+        for bad in ["rand_0000001..", "rand_0000001.a/b", "rand_0000001.a\\b", "rand_0000001.", "rand_0000001..hidden", "rand_x.json"] {
+            assert_eq!(split_member(bad), None, "{bad}");
+        }
         assert_eq!(member_name(key, "rand_0000042_specification.json"), "rand_0000042.specification.json");
     }
 
@@ -471,12 +615,69 @@ mod tests {
         let bytes = tar(&[("x.a".into(), &a), ("x.b".into(), &b)]).unwrap();
         assert_eq!(bytes.len() % BLOCK, 0);
         let back = untar(&bytes).unwrap();
-        assert_eq!(back, vec![("x.a".to_string(), a.as_slice()), ("x.b".to_string(), b.as_slice())]);
+        assert_eq!(back, vec![("x.a".to_string(), a.clone()), ("x.b".to_string(), b.clone())]);
         assert!(untar(&bytes[..bytes.len() - 1500]).unwrap_err().contains("truncated"));
         let mut bad = bytes.clone();
         bad[3] ^= 1;
         assert!(untar(&bad).unwrap_err().contains("checksum"));
         assert!(untar(b"{\"not\": \"a tar\"}").unwrap_err().contains("not a tar"));
+    }
+
+    /// A reader that counts the bytes read through it.
+    struct Counting<R> {
+        inner: R,
+        read: std::rc::Rc<std::cell::Cell<u64>>,
+    }
+
+    impl<R: io::Read> io::Read for Counting<R> {
+        fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+            let n = self.inner.read(buf)?;
+            self.read.set(self.read.get() + n as u64);
+            Ok(n)
+        }
+    }
+
+    impl<R: io::Seek> io::Seek for Counting<R> {
+        fn seek(&mut self, pos: io::SeekFrom) -> io::Result<u64> {
+            self.inner.seek(pos)
+        }
+    }
+
+    #[test]
+    fn listing_an_archive_reads_its_headers_not_its_members() {
+        let big = vec![1u8; 4 << 20];
+        let info = b"{}".to_vec();
+        let bytes = tar(&[
+            ("rand_0000000.boxmesh.obj".into(), &big),
+            ("rand_0000000.sample_info.json".into(), &info),
+            ("rand_0000001.boxmesh.obj".into(), &big),
+            ("rand_0000001.sample_info.json".into(), &info),
+        ])
+        .unwrap();
+        let read = std::rc::Rc::new(std::cell::Cell::new(0));
+        let mut reader = TarReader::new(Counting { inner: io::Cursor::new(&bytes), read: read.clone() }).unwrap();
+        let samples = shard_samples(&mut reader).unwrap();
+        let keys: Vec<&str> = samples.iter().map(|(k, _)| k.as_str()).collect();
+        assert_eq!(keys, ["rand_0000000", "rand_0000001"]);
+        assert!(read.get() < 1 << 20, "listing read {} of {} bytes", read.get(), bytes.len());
+        // A member is read when asked for.
+        assert_eq!(reader.read(&samples[1].1[1]).unwrap(), info);
+        assert_eq!(reader.read(&samples[0].1[0]).unwrap(), big);
+    }
+
+    #[test]
+    fn a_sample_whose_files_are_apart_is_refused() {
+        let x = b"x".to_vec();
+        let bytes = tar(&[
+            ("rand_0000001.specification.json".into(), &x),
+            ("rand_0000002.sample_info.json".into(), &x),
+            ("rand_0000001.sample_info.json".into(), &x),
+        ])
+        .unwrap();
+        let err = shard_samples(&mut TarReader::new(io::Cursor::new(&bytes)).unwrap()).map(|_| ()).unwrap_err();
+        assert!(err.contains("the files of rand_0000001 are not together"), "{err}");
+        let empty = tar(&[]).unwrap();
+        assert_eq!(shard_samples(&mut TarReader::new(io::Cursor::new(&empty)).unwrap()).map(|_| ()).unwrap_err(), "holds no sample");
     }
 
     #[test]
