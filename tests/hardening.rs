@@ -235,3 +235,25 @@ fn a_design_with_270_000_keys_reads_in_linear_time_with_a_short_error() {
     let e = garmentcode::io::read_design::<garments::Design>(&dup, "dup.yaml", &space).unwrap_err().to_string();
     assert!(e.contains("duplicate mapping key"), "{}", &e[..200.min(e.len())]);
 }
+
+#[test]
+fn an_endless_input_file_is_refused_at_a_bound() {
+    if !Path::new("/dev/zero").exists() {
+        eprintln!("skipped: this system has no /dev/zero");
+        return;
+    }
+    let dir = scratch("endless_input");
+    for args in [
+        vec!["build", "-d", "/dev/zero", "-o", "out"],
+        vec!["build", "-b", "/dev/zero", "-o", "out"],
+        vec!["check", "/dev/zero"],
+        vec!["mesh", "/dev/zero", "-o", "out"],
+        vec!["sample", "--n", "2", "--seed", "1", "--design-space", "/dev/zero", "--out", "out"],
+    ] {
+        let o = within(FAST, &args.join(" "), || cli(&args, &dir));
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains("/dev/zero") && err.contains("larger than 64 MB"), "{args:?}: {err}");
+        assert!(!dir.join("out").exists(), "{args:?} wrote its output");
+    }
+}

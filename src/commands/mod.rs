@@ -27,9 +27,27 @@ pub enum CliError {
     Failed(String),
 }
 
+/// The largest input file read (design, body, design space, pattern): real ones
+/// are well under a megabyte, and the bound keeps a wrong argument (a disk image,
+/// `/dev/zero`) from filling memory.
+pub const MAX_INPUT_BYTES: u64 = 64 << 20;
+
+/// The text of an input file of at most [`MAX_INPUT_BYTES`]; the error says why
+/// not, without the path.
+pub fn read_text(path: impl AsRef<Path>) -> Result<String, String> {
+    use std::io::Read;
+    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    let mut bytes = Vec::new();
+    file.take(MAX_INPUT_BYTES + 1).read_to_end(&mut bytes).map_err(|e| e.to_string())?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        return Err(format!("larger than {} MB, which no input file is", MAX_INPUT_BYTES >> 20));
+    }
+    String::from_utf8(bytes).map_err(|_| "not UTF-8 text".to_string())
+}
+
 /// Read and parse a specification file, naming the file in errors.
 pub fn read_pattern(path: &str) -> Result<Pattern, CliError> {
-    let text = std::fs::read_to_string(path).map_err(|e| CliError::Input(format!("{path}: cannot read: {e}")))?;
+    let text = read_text(path).map_err(|e| CliError::Input(format!("{path}: cannot read: {e}")))?;
     Pattern::from_json(&text).map_err(|e| CliError::Input(format!("{path}: {e}")))
 }
 
@@ -97,7 +115,7 @@ fn source<'a>(arg: &'a str, known: &[&str], what: &str) -> Result<Source<'a>, Cl
             known.join(", ")
         )));
     }
-    std::fs::read_to_string(arg).map(Source::File).map_err(|e| CliError::Input(format!("{arg}: cannot read: {e}")))
+    read_text(arg).map(Source::File).map_err(|e| CliError::Input(format!("{arg}: cannot read: {e}")))
 }
 
 /// The design to build: a built-in name or a design file.

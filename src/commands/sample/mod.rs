@@ -147,7 +147,7 @@ fn parse_formats(s: &str) -> Result<Formats, CliError> {
 pub fn load_space(file: Option<&str>) -> Result<(garmentcode::DesignSpace, String), CliError> {
     let base = Design::design_space();
     let Some(file) = file else { return Ok((base, "built-in".into())) };
-    let text = std::fs::read_to_string(file).map_err(|e| CliError::Input(format!("{file}: cannot read the design space: {e}")))?;
+    let text = super::read_text(file).map_err(|e| CliError::Input(format!("{file}: cannot read the design space: {e}")))?;
     let space =
         garmentcode::DesignSpace::from_yaml(&text, file, &base).map_err(|e| CliError::Input(format!("invalid design space: {e}")))?;
     Ok((space, file.to_string()))
@@ -185,7 +185,7 @@ pub fn load_bodies(arg: Option<&str>) -> Result<Vec<NamedBody>, CliError> {
         let (body, name) = match builtin {
             Some(b) => (b, item.strip_suffix(".yaml").unwrap_or(&item).to_string()),
             None if Path::new(&item).is_file() => {
-                let text = std::fs::read_to_string(&item).map_err(|e| CliError::Input(format!("{item}: cannot read: {e}")))?;
+                let text = super::read_text(&item).map_err(|e| CliError::Input(format!("{item}: cannot read: {e}")))?;
                 let b = garmentcode::Body::from_yaml(&text, &item).map_err(|e| CliError::Input(e.to_string()))?;
                 let stem = Path::new(&item).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| item.clone());
                 (b, stem)

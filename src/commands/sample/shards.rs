@@ -122,6 +122,10 @@ fn read_octal(field: &[u8]) -> Option<u64> {
     u64::from_str_radix(text, 8).ok()
 }
 
+/// The largest sample file unpacked: a box mesh at the mesher's vertex limit
+/// stays well below.
+const MAX_MEMBER: u64 = 1 << 30;
+
 /// One regular file of a ustar archive: its name and where its bytes are.
 struct Member {
     name: String,
@@ -214,8 +218,11 @@ impl<R: io::Read + io::Seek> TarReader<R> {
         }
     }
 
-    /// The bytes of `m`, a member of this archive.
-    fn read(&mut self, m: &Member) -> Result<Vec<u8>, String> {
+    /// The bytes of `m`, a member of this archive, of at most `limit` bytes.
+    fn read(&mut self, m: &Member, limit: u64) -> Result<Vec<u8>, String> {
+        if m.size > limit {
+            return Err(format!("{}: {} bytes, more than a file of a sample has (at most {limit})", m.name, m.size));
+        }
         let size = usize::try_from(m.size).map_err(|_| format!("{}: too large to read", m.name))?;
         let mut bytes = vec![0; size];
         self.read_at(m.start, &mut bytes)?;
@@ -229,7 +236,7 @@ fn untar(bytes: &[u8]) -> Result<Vec<(String, Vec<u8>)>, String> {
     let mut tar = TarReader::new(io::Cursor::new(bytes)).map_err(|e| e.to_string())?;
     let mut out = Vec::new();
     while let Some(m) = tar.next_member()? {
-        let bytes = tar.read(&m)?;
+        let bytes = tar.read(&m, MAX_MEMBER)?;
         out.push((m.name, bytes));
     }
     Ok(out)
@@ -480,7 +487,7 @@ fn check_shard(path: &Path, s: &Settings, range: std::ops::Range<u64>) -> Result
         }
         keys.entry(index).or_default().push(rest.to_string());
         if rest == store::INFO {
-            let data = tar.read(&member).map_err(damaged)?;
+            let data = tar.read(&member, crate::commands::MAX_INPUT_BYTES).map_err(damaged)?;
             let text = std::str::from_utf8(&data).map_err(|_| format!("{show}: {name} is not text"))?;
             records.push(store::parse_info(text, &format_args!("{show}: {name}"), s, index)?);
         }
@@ -551,7 +558,7 @@ pub fn unpack(shards: &[PathBuf], out: &Path) -> Result<usize, String> {
             let mut files = Vec::with_capacity(members.len());
             for m in &members {
                 let (_, _, rest) = split_member(&m.name).expect("listed as a sample file");
-                files.push((folder_file_name(&key, rest), tar.read(m).map_err(|e| format!("{show}: {e}"))?));
+                files.push((folder_file_name(&key, rest), tar.read(m, MAX_MEMBER).map_err(|e| format!("{show}: {e}"))?));
             }
             store::write_folder(out, &key, &files).map_err(|e| format!("cannot write {}: {e}", out.join(&key).display()))?;
             count += 1;
@@ -661,8 +668,9 @@ mod tests {
         assert_eq!(keys, ["rand_0000000", "rand_0000001"]);
         assert!(read.get() < 1 << 20, "listing read {} of {} bytes", read.get(), bytes.len());
         // A member is read when asked for.
-        assert_eq!(reader.read(&samples[1].1[1]).unwrap(), info);
-        assert_eq!(reader.read(&samples[0].1[0]).unwrap(), big);
+        assert_eq!(reader.read(&samples[1].1[1], 2).unwrap(), info);
+        assert_eq!(reader.read(&samples[0].1[0], MAX_MEMBER).unwrap(), big);
+        assert!(reader.read(&samples[0].1[0], 1 << 20).unwrap_err().contains("more than a file of a sample has"));
     }
 
     #[test]

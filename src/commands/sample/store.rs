@@ -292,7 +292,7 @@ fn info_json(s: &Settings, r: &Record) -> String {
 
 /// Read a finished sample's record, checking that it belongs to this dataset.
 fn read_info(path: &Path, s: &Settings, index: u64) -> Result<Record, String> {
-    let text = fs::read_to_string(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+    let text = crate::commands::read_text(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
     parse_info(&text, &path.display(), s, index)
 }
 
