@@ -149,10 +149,10 @@ struct TarReader<R> {
 }
 
 impl TarReader<fs::File> {
-    /// The archive at `path`.
+    /// The archive at `path` (errors name it).
     fn open(path: &Path) -> Result<Self, String> {
-        let file = fs::File::open(path).map_err(|e| format!("cannot read: {e}"))?;
-        TarReader::new(file).map_err(|e| format!("cannot read: {e}"))
+        let fail = |e: io::Error| format!("{}: cannot read: {e}", path.display());
+        TarReader::new(fs::File::open(path).map_err(fail)?).map_err(fail)
     }
 }
 
@@ -469,7 +469,7 @@ pub fn scan(
 fn check_shard(path: &Path, s: &Settings, range: std::ops::Range<u64>) -> Result<Vec<Record>, String> {
     let show = path.display();
     let damaged = |e: String| format!("{show}: a damaged shard ({e}); delete it and rerun to make it again");
-    let mut tar = TarReader::open(path).map_err(|e| format!("{show}: {e}"))?;
+    let mut tar = TarReader::open(path)?;
     let mut keys: std::collections::BTreeMap<u64, Vec<String>> = std::collections::BTreeMap::new();
     let mut records = Vec::new();
     while let Some(member) = tar.next_member().map_err(damaged)? {
@@ -539,7 +539,7 @@ fn shard_samples<R: io::Read + io::Seek>(tar: &mut TarReader<R>) -> Result<Vec<(
 pub fn check_archives(shards: &[PathBuf]) -> Result<(), String> {
     for path in shards {
         let show = path.display();
-        let mut tar = TarReader::open(path).map_err(|e| format!("{show}: {e}"))?;
+        let mut tar = TarReader::open(path)?;
         shard_samples(&mut tar).map_err(|e| format!("{show}: {e}"))?;
     }
     Ok(())
@@ -553,12 +553,13 @@ pub fn unpack(shards: &[PathBuf], out: &Path) -> Result<usize, String> {
     let mut count = 0;
     for path in shards {
         let show = path.display();
-        let mut tar = TarReader::open(path).map_err(|e| format!("{show}: {e}"))?;
+        let mut tar = TarReader::open(path)?;
         for (key, members) in shard_samples(&mut tar).map_err(|e| format!("{show}: {e}"))? {
             let mut files = Vec::with_capacity(members.len());
             for m in &members {
-                let (_, _, rest) = split_member(&m.name).expect("listed as a sample file");
-                files.push((folder_file_name(&key, rest), tar.read(m, MAX_MEMBER).map_err(|e| format!("{show}: {e}"))?));
+                // `KEY.SUFFIX`, as `shard_samples` checked.
+                let suffix = &m.name[key.len() + 1..];
+                files.push((folder_file_name(&key, suffix), tar.read(m, MAX_MEMBER).map_err(|e| format!("{show}: {e}"))?));
             }
             store::write_folder(out, &key, &files).map_err(|e| format!("cannot write {}: {e}", out.join(&key).display()))?;
             count += 1;
