@@ -181,14 +181,41 @@ fn positive_dpi(s: &str) -> Result<f64, String> {
     }
 }
 
+/// A built-in name or a file: any text is accepted (`load_design` and `load_body`
+/// judge it), and the built-in names are offered by shell completion.
+#[derive(Clone)]
+pub struct NameOrFile(fn() -> Vec<&'static str>);
+
+impl clap::builder::TypedValueParser for NameOrFile {
+    type Value = String;
+
+    fn parse_ref(&self, cmd: &clap::Command, arg: Option<&clap::Arg>, value: &std::ffi::OsStr) -> Result<String, clap::Error> {
+        clap::builder::StringValueParser::new().parse_ref(cmd, arg, value)
+    }
+
+    fn possible_values(&self) -> Option<Box<dyn Iterator<Item = clap::builder::PossibleValue> + '_>> {
+        Some(Box::new(self.0().into_iter().map(clap::builder::PossibleValue::new)))
+    }
+}
+
+/// `--design`: a built-in design or a design file.
+fn design_arg() -> NameOrFile {
+    NameOrFile(|| garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect())
+}
+
+/// `--body`: a built-in body or a body file.
+fn body_arg() -> NameOrFile {
+    NameOrFile(|| garments::builtin::BODIES.iter().map(|(n, _)| *n).collect())
+}
+
 /// `garmentcode build`.
 #[derive(Args, Debug)]
 pub struct BuildArgs {
     /// Design: a design file (.yaml) or a built-in design (t-shirt, fitted-dress, sundress, shirt-dress, jumpsuit).
-    #[arg(short, long, value_name = "FILE.yaml|NAME", default_value = garments::builtin::DEFAULT_DESIGN)]
+    #[arg(short, long, value_name = "FILE.yaml|NAME", default_value = garments::builtin::DEFAULT_DESIGN, value_parser = design_arg(), hide_possible_values = true)]
     pub design: String,
     /// Body: a body file (.yaml) or a built-in body (mean_all, mean_female, mean_male, f_smpl_average_A40, m_smpl_average_A40).
-    #[arg(short, long, value_name = "NAME|FILE.yaml", default_value = garments::builtin::DEFAULT_BODY)]
+    #[arg(short, long, value_name = "NAME|FILE.yaml", default_value = garments::builtin::DEFAULT_BODY, value_parser = body_arg(), hide_possible_values = true)]
     pub body: String,
     /// Output folder.
     #[arg(short, long, value_name = "DIR")]
@@ -239,7 +266,9 @@ pub enum BuildFormat {
 /// Formats of `schema`.
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SchemaFormat {
-    /// A design file in the reference's layout with every parameter at its default (it builds).
+    /// The design space in the reference's layout (its `default.yaml`): every parameter's
+    /// type, range, default `v` and sampling probability, as `sample --design-space` reads it.
+    /// With --design, that design's values as `v` instead: a design file that builds.
     ReferenceYaml,
     /// A JSON Schema of design files.
     JsonSchema,
@@ -251,8 +280,13 @@ pub enum SchemaFormat {
 #[derive(Args, Debug)]
 pub struct SchemaArgs {
     /// Output format.
-    #[arg(short, long, value_enum, default_value_t = SchemaFormat::ReferenceYaml)]
+    #[arg(long, value_enum, default_value_t = SchemaFormat::ReferenceYaml)]
     pub format: SchemaFormat,
+    /// A starting design to edit and build instead of the design space: a built-in
+    /// design (a preset: t-shirt, fitted-dress, sundress, shirt-dress, jumpsuit) or a
+    /// design file, written with every parameter's range and probability.
+    #[arg(short, long, value_name = "NAME|FILE.yaml", value_parser = design_arg(), hide_possible_values = true)]
+    pub design: Option<String>,
 }
 
 /// Formats of `check`.
@@ -274,7 +308,7 @@ pub struct CheckArgs {
     #[arg(long)]
     pub strict: bool,
     /// Output format.
-    #[arg(short, long, value_enum, default_value_t = CheckFormat::Text)]
+    #[arg(long, value_enum, default_value_t = CheckFormat::Text)]
     pub format: CheckFormat,
 }
 
@@ -367,7 +401,7 @@ pub struct SampleArgs {
     #[arg(long, value_name = "I/K")]
     pub shard: Option<String>,
     /// Files per sample: a list of json, svg, png, mesh (the simulation box mesh at 1 cm; default json; with --replay json,svg,png).
-    #[arg(short, long, value_name = "LIST")]
+    #[arg(long, value_name = "LIST")]
     pub formats: Option<String>,
     /// Rebuild one sample, or one attempt of it, into DIR as `build` would.
     #[arg(short, long, value_name = "INDEX[:ATTEMPT]")]

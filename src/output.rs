@@ -4,6 +4,15 @@
 //! failed or killed run leaves the previous folder as it was. Leftovers of dead
 //! runs are removed (or, for a folder caught between the two renames of a swap,
 //! put back) by the next run on the same folder.
+//!
+//! Each folder carries a manifest, [`MANIFEST`], with a hash of every file the
+//! run wrote. The next run on the folder replaces it whole only if every file in
+//! it is still garmentcode's unchanged output, or an input of that run (a design
+//! file edited in place and built again); a file edited since (or from a folder
+//! without a manifest) is never deleted or overwritten without `--force`. The
+//! hash is FNV-1a (64 bits), written here in a few lines: it only has to notice
+//! an edit and stay the same across Rust versions, which std's hasher does not
+//! promise (the dataset sampler's settings fingerprint uses it too).
 
 use std::fs;
 use std::io;
@@ -14,6 +23,10 @@ use std::path::{Path, PathBuf};
 pub const OWN_FILES: &[&str] =
     &["specification.json", "pattern.svg", "pattern.png", "design_params.yaml", "body_measurements.yaml", "checks.json", "error.txt"];
 
+/// The hidden file listing what the run that wrote a folder wrote into it, with a
+/// hash of each file: `HASH NAME` a line.
+pub const MANIFEST: &str = ".garmentcode-files";
+
 /// Suffix of the pattern `garmentcode mesh` writes beside the mesh files (whose
 /// suffixes are [`garmentcode::mesh::write::FILE_SUFFIXES`]), after the pattern's name.
 const MESH_SPEC_SUFFIX: &str = "_specification.json";
@@ -22,6 +35,7 @@ const MESH_SPEC_SUFFIX: &str = "_specification.json";
 fn is_own_file(name: &str) -> bool {
     let mut mesh_suffixes = std::iter::once(MESH_SPEC_SUFFIX).chain(garmentcode::mesh::write::FILE_SUFFIXES);
     OWN_FILES.contains(&name)
+        || name == MANIFEST
         || garmentcode::fabricate::FILE_NAMES.contains(&name)
         || mesh_suffixes.any(|s| name.len() > s.len() && name.ends_with(s))
 }
@@ -30,6 +44,9 @@ fn is_own_file(name: &str) -> bool {
 #[derive(Default)]
 pub struct OutputSet {
     files: Vec<(String, Vec<u8>)>,
+    /// The run's input files: one of them inside the folder may be replaced even
+    /// if it was edited (it was read by this run).
+    inputs: Vec<PathBuf>,
 }
 
 /// Why an output folder was not written.
@@ -42,6 +59,12 @@ pub enum WriteError {
         names: Vec<String>,
         /// Whether `--force` would help (false for sub-folders).
         forcible: bool,
+    },
+    /// Files garmentcode wrote that were edited since (or that no manifest
+    /// vouches for), which this run would delete or overwrite.
+    Edited {
+        /// Names of a few of them.
+        names: Vec<String>,
     },
     /// A file system error.
     Io(io::Error),
@@ -58,6 +81,11 @@ impl std::fmt::Display for WriteError {
             WriteError::Foreign { names, forcible: false } => {
                 write!(f, "the folder holds sub-folders ({}); garmentcode does not replace it, choose another folder", names.join(", "))
             }
+            WriteError::Edited { names } => write!(
+                f,
+                "{} changed since garmentcode wrote it (or the folder has no record of it), and this run would delete or overwrite it; choose another folder, or --force to replace it",
+                names.join(", ")
+            ),
             WriteError::Io(e) => write!(f, "{e}"),
         }
     }
@@ -75,6 +103,14 @@ impl OutputSet {
         self.files.push((name.to_string(), bytes.into()));
     }
 
+    /// Name an input file of the run: if it lies in the output folder, it may be
+    /// replaced there even after an edit (the run read it).
+    pub fn add_input(&mut self, path: impl AsRef<Path>) {
+        if let Ok(p) = fs::canonicalize(path) {
+            self.inputs.push(p);
+        }
+    }
+
     /// Names of the files, in the order they were added.
     pub fn names(&self) -> Vec<String> {
         self.files.iter().map(|(n, _)| n.clone()).collect()
@@ -89,12 +125,19 @@ impl OutputSet {
         clean_leftovers(&parent, &base, dir);
         if dir.exists() {
             check_replaceable(dir, force)?;
+            if !force {
+                self.check_unedited(dir)?;
+            }
         }
         let pid = std::process::id();
         let tmp = parent.join(format!(".{base}.tmp-{pid}"));
         let _ = fs::remove_dir_all(&tmp);
         fs::create_dir_all(&tmp)?;
-        let written = self.files.iter().try_for_each(|(name, bytes)| fs::write(tmp.join(name), bytes));
+        let written = self
+            .files
+            .iter()
+            .try_for_each(|(name, bytes)| fs::write(tmp.join(name), bytes))
+            .and_then(|()| fs::write(tmp.join(MANIFEST), self.manifest()));
         if let Err(e) = written {
             let _ = fs::remove_dir_all(&tmp);
             return Err(e.into());
@@ -118,6 +161,44 @@ impl OutputSet {
         Ok(())
     }
 
+    /// The manifest of these files: `HASH NAME` a line.
+    fn manifest(&self) -> String {
+        self.files.iter().map(|(name, bytes)| format!("{:016x} {name}\n", fnv1a(bytes))).collect()
+    }
+
+    /// Refuse to delete or overwrite a file of `dir` that is not garmentcode's
+    /// unchanged output (by the folder's manifest) nor an input of this run.
+    fn check_unedited(&self, dir: &Path) -> Result<(), WriteError> {
+        let manifest = fs::read_to_string(dir.join(MANIFEST)).unwrap_or_default();
+        let recorded: std::collections::HashMap<&str, &str> =
+            manifest.lines().filter_map(|l| l.split_once(' ')).map(|(h, n)| (n, h)).collect();
+        let mut edited = Vec::new();
+        for e in fs::read_dir(dir)? {
+            let e = e?;
+            let name = e.file_name().to_string_lossy().into_owned();
+            if name == MANIFEST || !e.file_type()?.is_file() {
+                continue;
+            }
+            let path = e.path();
+            let unchanged = match recorded.get(name.as_str()) {
+                Some(hash) => fs::read(&path).is_ok_and(|bytes| format!("{:016x}", fnv1a(&bytes)) == *hash),
+                None => false,
+            };
+            let is_input = fs::canonicalize(&path).is_ok_and(|p| self.inputs.contains(&p));
+            let same_bytes = || self.files.iter().any(|(n, b)| *n == name && fs::read(&path).is_ok_and(|old| old == *b));
+            if !unchanged && !is_input && !same_bytes() {
+                edited.push(name);
+            }
+        }
+        edited.sort();
+        if edited.is_empty() {
+            Ok(())
+        } else {
+            edited.truncate(3);
+            Err(WriteError::Edited { names: edited })
+        }
+    }
+
     /// Write every file into the folder `dir`, which may hold other files (a
     /// dataset's summary beside its samples): each file is replaced atomically.
     pub fn write_files_into(&self, dir: &Path) -> io::Result<()> {
@@ -139,6 +220,37 @@ impl OutputSet {
         }
         Ok(())
     }
+}
+
+/// The 64-bit FNV-1a hash, fed piece by piece: a stable fingerprint of files and
+/// settings (std's hasher may change between Rust versions).
+pub struct Fnv1a(u64);
+
+impl Default for Fnv1a {
+    fn default() -> Self {
+        Fnv1a(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Fnv1a {
+    /// Feed `bytes`.
+    pub fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+
+    /// The hash so far.
+    pub fn finish(&self) -> u64 {
+        self.0
+    }
+}
+
+/// The 64-bit FNV-1a hash of `bytes`.
+fn fnv1a(bytes: &[u8]) -> u64 {
+    let mut h = Fnv1a::default();
+    h.write(bytes);
+    h.finish()
 }
 
 /// Parent folder and name of `dir` (`.` and `..` resolved).
@@ -255,6 +367,49 @@ mod tests {
         assert!(!out.join("notes.txt").exists());
         fs::create_dir_all(out.join("sub")).unwrap();
         assert!(matches!(set(&["checks.json"]).write_folder(&out, true), Err(WriteError::Foreign { forcible: false, .. })));
+        fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn an_edited_file_is_never_deleted_or_overwritten_without_force() {
+        let d = scratch("edited");
+        let out = d.join("out");
+        set(&["specification.json", "design_params.yaml"]).write_folder(&out, false).unwrap();
+        // Unchanged: a run that does not write it removes it.
+        set(&["specification.json"]).write_folder(&out, false).unwrap();
+        assert!(!out.join("design_params.yaml").exists());
+        set(&["specification.json", "design_params.yaml"]).write_folder(&out, false).unwrap();
+        fs::write(out.join("design_params.yaml"), "edited by hand").unwrap();
+        // A run that would delete it, or overwrite it with other bytes, is refused.
+        let e = set(&["specification.json"]).write_folder(&out, false).unwrap_err();
+        assert!(matches!(e, WriteError::Edited { .. }) && e.to_string().contains("design_params.yaml"), "{e}");
+        let mut other = OutputSet::default();
+        other.add("design_params.yaml", "another design");
+        assert!(matches!(other.write_folder(&out, false), Err(WriteError::Edited { .. })));
+        assert_eq!(fs::read_to_string(out.join("design_params.yaml")).unwrap(), "edited by hand");
+        // Read by the run (a design edited in place and built again): replaced.
+        other.add_input(out.join("design_params.yaml"));
+        other.write_folder(&out, false).unwrap();
+        assert_eq!(fs::read_to_string(out.join("design_params.yaml")).unwrap(), "another design");
+        // --force replaces an edited file.
+        fs::write(out.join("design_params.yaml"), "edited again").unwrap();
+        set(&["specification.json"]).write_folder(&out, true).unwrap();
+        assert!(!out.join("design_params.yaml").exists());
+        fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn a_folder_without_a_manifest_keeps_what_the_run_would_change() {
+        let d = scratch("legacy");
+        let out = d.join("out");
+        fs::create_dir_all(&out).unwrap();
+        fs::write(out.join("specification.json"), "specification.json").unwrap();
+        fs::write(out.join("checks.json"), "{}").unwrap();
+        // The same bytes are no loss; a file the run would delete is.
+        let e = set(&["specification.json"]).write_folder(&out, false).unwrap_err();
+        assert_eq!(e.to_string().split(" changed").next(), Some("checks.json"));
+        set(&["specification.json", "checks.json"]).write_folder(&out, true).unwrap();
+        assert_eq!(fs::read_to_string(out.join(MANIFEST)).unwrap().lines().count(), 2);
         fs::remove_dir_all(&d).unwrap();
     }
 

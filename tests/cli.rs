@@ -327,15 +327,52 @@ fn command_line_conventions() {
 }
 
 #[test]
-fn schema_reference_yaml_is_a_design_that_builds() {
+fn schema_prints_the_design_space_and_presets_are_designs_that_build() {
     let dir = scratch("schema_builds");
+    // The design space: at its defaults nothing is chosen, and building it says what to do.
     let o = run(&["schema"], &dir);
     assert_eq!(code(&o), 0);
-    std::fs::write(dir.join("schema.yaml"), o.stdout).unwrap();
-    let o = run(&["build", "--design", "schema.yaml", "-o", "out", "--no-png"], &dir);
+    std::fs::write(dir.join("space.yaml"), o.stdout).unwrap();
+    let o = run(&["build", "--design", "space.yaml", "-o", "out", "--no-png"], &dir);
+    assert_eq!(code(&o), 2, "{}", stderr(&o));
+    assert!(stderr(&o).contains("empty garment") && stderr(&o).contains("schema --design t-shirt"), "{}", stderr(&o));
+    assert!(!dir.join("out").exists());
+    // A preset, written with every range and probability, builds the preset.
+    let o = run(&["schema", "--design", "t-shirt"], &dir);
     assert_eq!(code(&o), 0, "{}", stderr(&o));
-    let spec: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("out/specification.json")).unwrap()).unwrap();
-    assert!(!spec["pattern"]["panels"].as_object().unwrap().is_empty());
+    std::fs::write(dir.join("t.yaml"), o.stdout).unwrap();
+    assert_eq!(code(&run(&["build", "--design", "t.yaml", "--name", "t-shirt", "-o", "a", "--no-png"], &dir)), 0);
+    assert_eq!(code(&run(&["build", "--design", "t-shirt", "-o", "b", "--no-png"], &dir)), 0);
+    let spec = |d: &str| std::fs::read(dir.join(d).join("specification.json")).unwrap();
+    assert!(spec("a") == spec("b"), "the preset's design file builds the preset");
+    // --design goes with the design-file format only.
+    assert_eq!(code(&run(&["schema", "--design", "t-shirt", "--format", "table"], &dir)), 2);
+}
+
+#[test]
+fn schema_equals_the_references_default_design_space_parameter_by_parameter() {
+    let dir = scratch("schema_reference");
+    let o = run(&["schema"], &dir);
+    assert_eq!(code(&o), 0);
+    let ours = String::from_utf8(o.stdout).unwrap();
+    let reference = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/reference_default.yaml")).unwrap();
+    let base = <garments::Design as garmentcode::Params>::design_space();
+    let ours = garmentcode::DesignSpace::from_yaml(&ours, "schema", &base).unwrap();
+    let reference = garmentcode::DesignSpace::from_yaml(&reference, "default.yaml", &base).unwrap();
+    assert_eq!(ours.params().len(), reference.params().len());
+    assert_eq!(ours.params().len(), 122);
+    // Values compare as the reference compares them (`0 == 0.0`: one option list
+    // of the reference mixes `0` with floats).
+    let same = |x: &garmentcode::Value, y: &garmentcode::Value| x.loosely_eq(y);
+    let same_range = |x: &garmentcode::Range, y: &garmentcode::Range| match (x, y) {
+        (garmentcode::Range::Options(a), garmentcode::Range::Options(b)) => a.len() == b.len() && a.iter().zip(b).all(|(a, b)| same(a, b)),
+        _ => x == y,
+    };
+    for (a, b) in ours.params().iter().zip(reference.params()) {
+        assert_eq!(a.path, b.path);
+        assert_eq!((a.kind, a.default_prob), (b.kind, b.default_prob), "{}", a.path);
+        assert!(same_range(&a.range, &b.range) && same(&a.default, &b.default), "{}: {a:?} against {b:?}", a.path);
+    }
 }
 
 #[test]
@@ -396,6 +433,95 @@ fn output_folders_are_replaced_whole_and_foreign_ones_refused() {
     std::fs::create_dir_all(dir.join(".out.tmp-4000000000")).unwrap();
     assert_eq!(code(&run(&["build", "-o", "out", "--no-png"], &dir)), 0);
     assert!(!dir.join(".out.tmp-4000000000").exists());
+}
+
+#[test]
+fn a_re_render_never_deletes_an_edited_design_file() {
+    let dir = scratch("rerender");
+    assert_eq!(code(&run(&["build", "-o", "build"], &dir)), 0);
+    let design = dir.join("build/design_params.yaml");
+    let edited = std::fs::read_to_string(&design).unwrap() + "# my fitting notes\n";
+    std::fs::write(&design, &edited).unwrap();
+    // `render` writes no design file: it would delete the edited one, so it refuses.
+    let o = run(&["render", "build/specification.json", "-o", "build"], &dir);
+    assert_eq!(code(&o), 2, "{}", stderr(&o));
+    assert!(stderr(&o).contains("design_params.yaml") && stderr(&o).contains("--force"), "{}", stderr(&o));
+    assert_eq!(std::fs::read_to_string(&design).unwrap(), edited);
+    for f in ["body_measurements.yaml", "checks.json"] {
+        assert!(dir.join("build").join(f).exists(), "{f} kept");
+    }
+    // Building the edited design file into its own folder reads it: allowed.
+    let o = run(&["build", "-d", "build/design_params.yaml", "-o", "build"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    // Unchanged files of the tool's own are replaced as before.
+    let o = run(&["render", "build/specification.json", "-o", "build"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(!design.exists() && dir.join("build/specification.json").exists());
+}
+
+#[test]
+fn check_on_a_yaml_file_says_what_the_file_is() {
+    let dir = scratch("check_yaml");
+    assert_eq!(code(&run(&["build", "-o", "out", "--no-png"], &dir)), 0);
+    let o = run(&["check", "out/design_params.yaml"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("YAML design file") && stderr(&o).contains("build --design"), "{}", stderr(&o));
+    let o = run(&["check", "out/body_measurements.yaml"], &dir);
+    assert!(stderr(&o).contains("YAML body file"), "{}", stderr(&o));
+}
+
+#[test]
+fn many_body_problems_come_one_a_line_and_huge_values_are_cut_short() {
+    let dir = scratch("body_problems");
+    let bad: String = garmentcode::MEASUREMENTS.iter().map(|m| format!("  {}: -1\n", m.name)).collect();
+    std::fs::write(dir.join("bad.yaml"), format!("body:\n{bad}")).unwrap();
+    let o = run(&["build", "-b", "bad.yaml", "-o", "out"], &dir);
+    assert_eq!(code(&o), 2);
+    let err = stderr(&o);
+    assert!(err.lines().count() >= 20 && err.lines().all(|l| l.len() < 300), "{err}");
+    // A 10 MB value and a number of 309 digits are quoted short.
+    let huge = "x".repeat(10 << 20);
+    std::fs::write(dir.join("huge.yaml"), format!("body:\n  height: {huge}\n  waist: 1e308\n")).unwrap();
+    let o = run(&["build", "-b", "huge.yaml", "-o", "out"], &dir);
+    assert_eq!(code(&o), 2);
+    let err = stderr(&o);
+    assert!(err.len() < 4000 && err.contains("(10485760 characters)") && err.contains("1e308"), "{}", &err[..err.len().min(4000)]);
+    let design = format!("design:\n  meta:\n    upper:\n      v: {huge}\n  waistband:\n    waist:\n      v: 1e308\n");
+    std::fs::write(dir.join("huge_design.yaml"), design).unwrap();
+    let o = run(&["build", "-d", "huge_design.yaml", "-o", "out"], &dir);
+    assert_eq!(code(&o), 2);
+    let err = stderr(&o);
+    assert!(err.len() < 4000 && err.contains("characters)"), "{}", &err[..err.len().min(4000)]);
+}
+
+#[test]
+fn labels_and_names_have_a_maximum_length() {
+    let dir = scratch("labels");
+    assert_eq!(code(&run(&["build", "-o", "out", "--no-png"], &dir)), 0);
+    let long = "L".repeat(100_000);
+    for args in [
+        vec!["print", "out/specification.json", "-o", "p", "--garment", &long],
+        vec!["print", "out/specification.json", "-o", "p", "--size", &long],
+        vec!["mesh", "out/specification.json", "-o", "m", "--name", &long],
+        vec!["build", "-o", "b", "--name", &long],
+    ] {
+        let t = std::time::Instant::now();
+        let o = run(&args, &dir);
+        assert_eq!(code(&o), 2, "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("longer than 100 characters") && stderr(&o).len() < 1000, "{}", stderr(&o));
+        assert!(t.elapsed().as_secs() < 10);
+    }
+    assert!(!dir.join("p").exists() && !dir.join("m").exists() && !dir.join("b").exists());
+    // A pattern whose panel names are that long is refused when read.
+    let mut spec: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("out/specification.json")).unwrap()).unwrap();
+    let panels = spec["pattern"]["panels"].as_object_mut().unwrap();
+    let first = panels.keys().next().unwrap().clone();
+    let panel = panels.remove(&first).unwrap();
+    panels.insert(long.clone(), panel);
+    std::fs::write(dir.join("long.json"), spec.to_string()).unwrap();
+    let o = run(&["check", "long.json"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("longer than 100 characters"), "{}", stderr(&o));
 }
 
 #[test]

@@ -15,6 +15,7 @@
 //! outside its range is an error that names the range and the likely cause, such
 //! as a length typed in metres.
 
+use crate::message::{quote, short};
 use crate::parity::yaml::{self, Node, Value as Y};
 use std::fmt;
 
@@ -58,10 +59,15 @@ const MAX_SHOWN: usize = 20;
 
 impl fmt::Display for BodyError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: ", self.file)?;
-        f.write_str(&self.problems.iter().take(MAX_SHOWN).cloned().collect::<Vec<_>>().join("; "))?;
+        if let [one] = &self.problems[..] {
+            return write!(f, "{}: {one}", self.file);
+        }
+        write!(f, "{}: {} problems", self.file, self.problems.len())?;
+        for p in self.problems.iter().take(MAX_SHOWN) {
+            write!(f, "\n  {p}")?;
+        }
         if self.problems.len() > MAX_SHOWN {
-            write!(f, "; ... and {} more", self.problems.len() - MAX_SHOWN)?;
+            write!(f, "\n  ... and {} more", self.problems.len() - MAX_SHOWN)?;
         }
         Ok(())
     }
@@ -299,7 +305,7 @@ impl Body {
                 continue; // derived values are always recomputed
             }
             let Some(i) = MEASUREMENTS.iter().position(|m| m.name == name) else {
-                problems.push(format!("{at}: unknown measurement `{name}`{}", did_you_mean(name)));
+                problems.push(format!("{at}: unknown measurement {}{}", quote(name), did_you_mean(name)));
                 continue;
             };
             match v.as_f64() {
@@ -411,14 +417,19 @@ impl Body {
             return Err(format!("unknown measurement{}", did_you_mean(name)));
         };
         if !x.is_finite() {
-            return Err(format!("expected a finite number, got {x}"));
+            return Err(format!("expected a finite number, got {}", short(x)));
         }
         if (m.min..=m.max).contains(&x) {
             return Ok(());
         }
         let unit = m.unit;
-        let mut e =
-            format!("{x} {unit} is outside the plausible range {} to {} {unit} ({})", m.min, m.max, m.description.trim_end_matches('.'));
+        let mut e = format!(
+            "{} {unit} is outside the plausible range {} to {} {unit} ({})",
+            short(x),
+            m.min,
+            m.max,
+            m.description.trim_end_matches('.')
+        );
         let conversions: &[(f64, &str)] = if unit == "cm" {
             &[(100.0, "metres"), (0.1, "millimetres"), (2.54, "inches")]
         } else {
@@ -468,7 +479,7 @@ fn edit_distance(a: &str, b: &str) -> usize {
 
 fn describe(n: &Node) -> String {
     match &n.value {
-        Y::Str(s) => format!("\"{s}\""),
+        Y::Str(s) => quote(s),
         other => other.type_name().to_string(),
     }
 }

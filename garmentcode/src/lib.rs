@@ -66,6 +66,7 @@ pub mod intersect;
 pub mod math;
 #[cfg(feature = "mesh")]
 pub mod mesh;
+pub mod message;
 pub mod ops;
 pub mod slots;
 

@@ -21,7 +21,10 @@ pub enum BuildError {
 impl fmt::Display for BuildError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            BuildError::Empty => f.write_str("empty garment: the design has no upper garment, waistband or bottom"),
+            BuildError::Empty => f.write_str(
+                "empty garment: the design has no upper garment, waistband or bottom (meta.upper, meta.wb and meta.bottom are null, \
+                 as at the design space's defaults; start from a preset instead: `garmentcode schema --design t-shirt`)",
+            ),
             BuildError::Geometry(e) => write!(f, "the design cannot be built: {e}"),
         }
     }
@@ -113,7 +116,7 @@ pub fn build_in(arena: &mut Arena, design: &Design, body: &Body, name: &str) -> 
     degenerate(arena)?;
     let pattern = garment.assemble(arena, name);
     degenerate(arena)?;
-    let pattern = finite(pattern?)?;
+    let pattern = readable(pattern?)?;
     let param_combinations = check_param_combinations(design);
     let checks =
         Checks { param_combinations, total_length, floor_length, total_length_ok: total_length <= floor_length + 1.0, self_intersecting };
@@ -168,22 +171,25 @@ pub fn build_valid_in(arena: &mut Arena, design: &Design, body: &Body, name: &st
     }
     let pattern = garment.assemble(arena, name);
     degenerate(arena).map_err(Refusal::Build)?;
-    let pattern = pattern.map_err(BuildError::from).and_then(finite).map_err(Refusal::Build)?;
+    let pattern = pattern.map_err(BuildError::from).and_then(readable).map_err(Refusal::Build)?;
     let param_combinations = check_param_combinations(design);
     let checks = Checks { param_combinations, total_length, floor_length, total_length_ok: true, self_intersecting: false };
     Ok(Built { pattern, checks })
 }
 
-/// A garment program can compute NaN on extreme designs (seen once in 100,000 random
-/// ones); such a pattern cannot be written, so it is refused (the dataset sampler
+/// The pattern, if it would read back: its numbers finite and within the limits
+/// of a specification file ([`Pattern::check_limits`]), so that what `build`
+/// writes, `check`, `render`, `mesh` and `print` read. A garment program can
+/// compute NaN, or a control point far off a tiny edge, on extreme designs (seen
+/// once in 100,000 random ones); such a pattern is refused (the dataset sampler
 /// draws again).
-fn finite(pattern: Pattern) -> Result<Pattern, BuildError> {
-    match pattern.non_finite() {
-        None => Ok(pattern),
-        Some(place) => {
-            Err(BuildError::Geometry(garmentcode::Error::Geometry(format!("the pattern has a number that is not finite at {place}"))))
-        }
+fn readable(pattern: Pattern) -> Result<Pattern, BuildError> {
+    let fail = |what: String| BuildError::Geometry(garmentcode::Error::Geometry(what));
+    if let Some(place) = pattern.non_finite() {
+        return Err(fail(format!("the pattern has a number that is not finite at {place}")));
     }
+    pattern.check_limits().map_err(|e| fail(format!("the pattern would be out of a specification's limits: {e}")))?;
+    Ok(pattern)
 }
 
 /// Fail as the reference does when a linearisation so far made a piece whose ends

@@ -28,8 +28,10 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
     let origin = Origin { design: &design, body: &body, checks: &built.checks };
     let draw = args.png.draw_options(args.layout.into());
     let print = garmentcode::fabricate::PrintOptions { garment: name.clone(), size: body_label.clone(), ..Default::default() };
-    let set = files(&built.pattern, Some(origin), &wanted, &draw, args.mesh_resolution, &print)
+    let mut set = files(&built.pattern, Some(origin), &wanted, &draw, args.mesh_resolution, &print)
         .map_err(|e| CliError::Input(format!("{design_label} on {body_label}: {e}")))?;
+    set.add_input(&args.design);
+    set.add_input(&args.body);
     write_folder(&set, &args.out, args.force)?;
     eprintln!(
         "wrote {}: {} panels, {} stitches ({design_label} on {body_label})",
@@ -69,7 +71,7 @@ pub fn files(
         set.add("pattern.svg", garmentcode::draw::to_svg(pattern, draw).map_err(|e| e.to_string())?);
     }
     if formats.contains(&BuildFormat::Png) {
-        set.add("pattern.png", garmentcode::draw::to_png(pattern, draw).map_err(|e| e.to_string())?);
+        set.add("pattern.png", crate::commands::png_drawing(pattern, draw).map_err(|e| e.to_string())?);
     }
     if formats.contains(&BuildFormat::Mesh) {
         let mesh = BoxMesh::new(pattern, mesh_resolution).map_err(|e| format!("cannot mesh the pattern: {e}"))?;

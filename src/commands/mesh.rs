@@ -29,6 +29,9 @@ pub(crate) fn prefix(file: &str) -> String {
 pub fn run(args: MeshArgs) -> Result<i32, CliError> {
     let file = &args.file;
     let mut pattern = read_pattern(file)?;
+    if let Some(name) = &args.name {
+        garmentcode::io::check_name("--name", name).map_err(|e| CliError::Usage(e.to_string()))?;
+    }
     pattern.name = args.name.clone().unwrap_or_else(|| prefix(file));
     if pattern.name.is_empty() || pattern.name.contains(['/', '\\']) {
         return Err(CliError::Usage(format!("--name: '{}' is not a file name prefix", pattern.name)));
@@ -39,6 +42,7 @@ pub fn run(args: MeshArgs) -> Result<i32, CliError> {
     for (name, bytes) in mesh.files() {
         set.add(&name, bytes);
     }
+    set.add_input(file);
     write_folder(&set, &args.out, args.force)?;
     eprintln!(
         "wrote {} ({} vertices, {} of them on stitches, {} triangles)",

@@ -66,9 +66,25 @@ pub fn add_drawings_with(
 ) -> garmentcode::Result<()> {
     set.add("pattern.svg", garmentcode::draw::to_svg(pattern, opts)?);
     if png {
-        set.add("pattern.png", garmentcode::draw::to_png(pattern, opts)?);
+        set.add("pattern.png", png_drawing(pattern, opts)?);
     }
     Ok(())
+}
+
+/// `pattern.png`, with a warning when the image had to be drawn at a lower
+/// resolution than asked (it would have exceeded [`garmentcode::draw::MAX_PNG_PIXELS`]).
+pub fn png_drawing(pattern: &Pattern, opts: &garmentcode::draw::DrawOptions) -> garmentcode::Result<Vec<u8>> {
+    let png = garmentcode::draw::render_png(pattern, opts)?;
+    if png.px_per_cm < opts.px_per_cm {
+        eprintln!(
+            "warning: pattern.png drawn at {:.2} px per cm (about {:.0} dpi) instead of {:.2}: at most {} million pixels are drawn",
+            png.px_per_cm,
+            png.px_per_cm * 2.54,
+            opts.px_per_cm,
+            garmentcode::draw::MAX_PNG_PIXELS / 1_000_000
+        );
+    }
+    Ok(png.bytes)
 }
 
 /// Write an output folder whole (see [`OutputSet::write_folder`]).

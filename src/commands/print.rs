@@ -22,7 +22,10 @@ pub fn run(args: PrintArgs) -> Result<i32, CliError> {
         edge_seams: args.seam_edges.clone(),
         paper: args.paper,
         fabric_width: args.fabric_width,
-        garment: args.garment.clone().unwrap_or_else(|| crate::commands::mesh::prefix(file)),
+        garment: args
+            .garment
+            .clone()
+            .unwrap_or_else(|| crate::commands::mesh::prefix(file).chars().take(garmentcode::io::MAX_NAME_CHARS).collect()),
         size: args.size.clone(),
     };
     for problem in garmentcode::validate(&pattern).iter().filter(|x| x.kind == garmentcode::ProblemKind::SelfIntersection) {
@@ -32,6 +35,7 @@ pub fn run(args: PrintArgs) -> Result<i32, CliError> {
     for (name, bytes) in files(&pattern, &opts).map_err(|e| CliError::Input(format!("{file}: {e}")))? {
         set.add(&name, bytes);
     }
+    set.add_input(file);
     write_folder(&set, &args.out, args.force)?;
     eprintln!("wrote {} ({} panels)", args.out.display(), pattern.panels.len());
     Ok(0)

@@ -25,6 +25,7 @@ pub fn run(args: RenderArgs) -> Result<i32, CliError> {
     set.add("specification.json", pattern.to_json().map_err(|e| CliError::Input(format!("{file}: {e}")))?);
     crate::commands::add_drawings_with(&mut set, &pattern, !args.no_png, &args.png.draw_options(args.layout.into()))
         .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
+    set.add_input(file);
     write_folder(&set, &args.out, args.force)?;
     eprintln!("wrote {}", args.out.display());
     Ok(0)

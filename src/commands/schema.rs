@@ -1,4 +1,4 @@
-//! `garmentcode schema [--format reference-yaml|json-schema|table]`
+//! `garmentcode schema [--format reference-yaml|json-schema|table] [--design NAME|FILE.yaml]`
 
 use crate::cli::{SchemaArgs, SchemaFormat};
 use crate::commands::CliError;
@@ -8,13 +8,19 @@ use garments::Design;
 
 pub fn run(args: SchemaArgs) -> Result<i32, CliError> {
     let space = Design::design_space();
+    if args.design.is_some() && args.format != SchemaFormat::ReferenceYaml {
+        return Err(CliError::Usage("--design writes a design file: it goes with --format reference-yaml (the default)".into()));
+    }
     match args.format {
-        // The built-in default design in the reference's layout (every parameter
-        // with its range and probability): a design file that builds.
-        SchemaFormat::ReferenceYaml => {
-            let default = garments::builtin::design(garments::builtin::DEFAULT_DESIGN).expect("the default design is built in");
-            out!("{}", write_design(&default, &space))
-        }
+        // The design space exactly, as the reference's `default.yaml` has it; with
+        // --design, that design as `v` (a design file that builds).
+        SchemaFormat::ReferenceYaml => match &args.design {
+            None => out!("{}", space.to_yaml()),
+            Some(arg) => {
+                let (design, _) = crate::commands::load_design(arg)?;
+                out!("{}", write_design(&design, &space))
+            }
+        },
         SchemaFormat::JsonSchema => outln!("{}", serde_json::to_string_pretty(&space.json_schema()).expect("schema serialises")),
         SchemaFormat::Table => {
             for p in space.params() {

@@ -42,6 +42,8 @@ mod svg;
 mod tests;
 
 pub use options::{DrawOptions, FLAT_ROW_WIDTH, Layout};
+#[cfg(feature = "png")]
+pub use raster::MAX_PNG_PIXELS;
 
 use crate::error::Result;
 use crate::pattern::Pattern;
@@ -79,9 +81,47 @@ pub fn to_svg(p: &Pattern, opts: &DrawOptions) -> Result<String> {
 /// reference's rasteriser rounds instead, so its PNG can be one pixel smaller), RGBA,
 /// transparent outside the panels unless `opts.background` is set.
 ///
+/// An image of more than [`MAX_PNG_PIXELS`] pixels is drawn at the highest
+/// resolution within it instead (see [`render_png`] to learn which).
+///
 /// Needs the `png` feature (on by default).
 #[cfg(feature = "png")]
 pub fn to_png(p: &Pattern, opts: &DrawOptions) -> Result<Vec<u8>> {
+    render_png(p, opts).map(|png| png.bytes)
+}
+
+/// A PNG drawing and the resolution it was drawn at.
+#[cfg(feature = "png")]
+#[derive(Clone, Debug)]
+pub struct Png {
+    /// The PNG file.
+    pub bytes: Vec<u8>,
+    /// Pixels per cm: `opts.px_per_cm`, or less when the image would have had
+    /// more than [`MAX_PNG_PIXELS`] pixels (the PNG's `Comment` chunk says so).
+    pub px_per_cm: f64,
+}
+
+/// [`to_png`], with the resolution it was drawn at.
+///
+/// ```
+/// use garmentcode::draw::{DrawOptions, MAX_PNG_PIXELS, render_png};
+/// use garmentcode::{Arena, EdgeSeq, PartExt, Vec2};
+///
+/// let mut a = Arena::new();
+/// let corners = [Vec2::ZERO, Vec2::new(0.0, 300.0), Vec2::new(200.0, 300.0), Vec2::new(200.0, 0.0)];
+/// let edges = EdgeSeq::from_points(&mut a, &corners, true)?;
+/// let panel = a.panel_with_edges("front", edges);
+/// let pattern = PartExt::assemble(&panel, &mut a, "demo")?;
+/// // 400 px per cm would be 100,000 × 150,000 px: drawn smaller instead.
+/// let png = render_png(&pattern, &DrawOptions { px_per_cm: 400.0, ..Default::default() })?;
+/// assert!(png.px_per_cm < 400.0);
+/// let (w, h) = (u32::from_be_bytes(png.bytes[16..20].try_into().unwrap()), u32::from_be_bytes(png.bytes[20..24].try_into().unwrap()));
+/// assert!(u64::from(w) * u64::from(h) <= MAX_PNG_PIXELS);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
+#[cfg(feature = "png")]
+pub fn render_png(p: &Pattern, opts: &DrawOptions) -> Result<Png> {
     let sheet = layout::layout(p, opts)?;
-    raster::render(&sheet, opts)
+    let (bytes, px_per_cm) = raster::render(&sheet, opts)?;
+    Ok(Png { bytes, px_per_cm })
 }

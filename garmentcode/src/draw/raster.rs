@@ -15,8 +15,26 @@ use super::options::DrawOptions;
 use crate::error::{Error, Result};
 use crate::math::Vec2;
 
-/// Largest image accepted (pixels), far above any garment at sane resolutions.
-const MAX_PIXELS: u64 = 200_000_000;
+/// Most pixels of a PNG drawing: 25 million (5,000 × 5,000; 100 MB while drawn). A
+/// garment at the default 3 px per cm is under a megapixel; a larger drawing (a
+/// high `--dpi`, a pattern in odd units) is drawn at the highest resolution that
+/// fits, which [`fitted_px_per_cm`] gives and the PNG records in a text chunk.
+pub const MAX_PNG_PIXELS: u64 = 25_000_000;
+
+/// The resolution a view box is drawn at: `asked`, or lower so that the image
+/// has at most [`MAX_PNG_PIXELS`] pixels.
+pub fn fitted_px_per_cm(view_box: [f64; 4], asked: f64) -> f64 {
+    let mut s = asked;
+    for _ in 0..64 {
+        let (w, h) = pixel_size(view_box, s);
+        let pixels = u64::from(w) * u64::from(h);
+        if pixels <= MAX_PNG_PIXELS {
+            break;
+        }
+        s *= (MAX_PNG_PIXELS as f64 / pixels as f64).sqrt() * 0.999;
+    }
+    s
+}
 
 /// Image size for a view box: `ceil(size × px_per_cm)`, ignoring float noise of
 /// 1e-9 px, and at least one pixel.
@@ -112,15 +130,13 @@ fn draw_texts(pm: &mut Pixmap, sheet: &Sheet, kind: TextKind, tf: Transform) {
 }
 
 /// Rasterise and encode.
-pub fn render(sheet: &Sheet, opts: &DrawOptions) -> Result<Vec<u8>> {
-    let s = opts.px_per_cm;
-    if !(s.is_finite() && s > 0.0) {
-        return Err(Error::Input(format!("PNG resolution must be a positive number of px per cm, not {s}")));
+pub fn render(sheet: &Sheet, opts: &DrawOptions) -> Result<(Vec<u8>, f64)> {
+    let asked = opts.px_per_cm;
+    if !(asked.is_finite() && asked > 0.0) {
+        return Err(Error::Input(format!("PNG resolution must be a positive number of px per cm, not {}", crate::message::short(asked))));
     }
+    let s = fitted_px_per_cm(sheet.view_box, asked);
     let (w, h) = pixel_size(sheet.view_box, s);
-    if u64::from(w) * u64::from(h) > MAX_PIXELS {
-        return Err(Error::Input(format!("PNG of {w} × {h} px is too large")));
-    }
     let mut pm = Pixmap::new(w, h).ok_or_else(|| Error::Input(format!("cannot allocate a {w} × {h} px image")))?;
     if let Some(c) = opts.background {
         pm.fill(Color::from_rgba8(c[0], c[1], c[2], 255));
@@ -168,12 +184,15 @@ pub fn render(sheet: &Sheet, opts: &DrawOptions) -> Result<Vec<u8>> {
     draw_texts(&mut pm, sheet, TextKind::VertexId, tf);
     draw_texts(&mut pm, sheet, TextKind::EdgeId, tf);
 
-    encode(pm)
+    let note = (s < asked)
+        .then(|| format!("drawn at {s:.4} px per cm instead of the {asked:.4} asked: at most {MAX_PNG_PIXELS} pixels are drawn"));
+    Ok((encode(pm, note.as_deref())?, s))
 }
 
 /// PNG bytes of the pixmap: RGBA, 8 bits, with png's fast (fdeflate) compression,
 /// several times faster than the default level for a slightly larger file.
-fn encode(pm: Pixmap) -> Result<Vec<u8>> {
+/// A `note` goes into a `Comment` text chunk.
+fn encode(pm: Pixmap, note: Option<&str>) -> Result<Vec<u8>> {
     let (w, h) = (pm.width(), pm.height());
     let rgba = pm.take_demultiplied();
     let mut out = Vec::new();
@@ -182,6 +201,9 @@ fn encode(pm: Pixmap) -> Result<Vec<u8>> {
     enc.set_depth(png::BitDepth::Eight);
     enc.set_compression(png::Compression::Fast);
     let fail = |e: png::EncodingError| Error::Input(format!("PNG encoding failed: {e}"));
+    if let Some(note) = note {
+        enc.add_text_chunk("Comment".into(), note.into()).map_err(fail)?;
+    }
     let mut writer = enc.write_header().map_err(fail)?;
     writer.write_image_data(&rgba).map_err(fail)?;
     writer.finish().map_err(fail)?;

@@ -124,8 +124,11 @@ impl Default for PrintOptions {
 }
 
 impl PrintOptions {
-    /// Refuse negative or non-finite allowances and widths.
+    /// Refuse negative or non-finite allowances and widths, and labels longer than
+    /// [`crate::io::MAX_NAME_CHARS`].
     pub(crate) fn check(&self) -> Result<()> {
+        crate::io::check_name("the garment name", &self.garment)?;
+        crate::io::check_name("the size", &self.size)?;
         let ok = |x: f64| (0.0..=MAX_ALLOWANCE).contains(&x);
         if !ok(self.seam) || !self.hem.is_none_or(ok) || !self.edge_seams.iter().all(|e| ok(e.cm)) {
             return Err(Error::Input(format!("seam allowances must be numbers of cm from 0 to {MAX_ALLOWANCE}")));

@@ -185,9 +185,9 @@ fn read_spec(path: &str, node: &Node, base: &ParamSpec) -> Result<ParamSpec, Str
                         }
                         opts.push(v);
                     }
-                    if kind == Kind::SelectNull && !opts.contains(&Value::Null) {
-                        opts.push(Value::Null);
-                    }
+                    // A `select_null` whose list leaves null out keeps it so (the
+                    // reference's `style_side_cut`): null stays a valid value, and
+                    // the sampler draws it all the same.
                     Range::Options(opts)
                 }
             }

@@ -16,7 +16,7 @@ mod spec;
 pub use design::{from_values, read_design, read_design_pairs, read_design_values, write_design, write_values};
 pub use design_error::DesignError;
 pub use design_writer::DesignWriter;
-pub use spec::{MAX_CONTROL, MAX_EDGES, MAX_EDGES_PER_PANEL, MAX_EXTENT_CM, MAX_PANELS};
+pub use spec::{MAX_CONTROL, MAX_EDGES, MAX_EDGES_PER_PANEL, MAX_EXTENT_CM, MAX_NAME_CHARS, MAX_PANELS, check_name};
 
 /// Testing aids; not part of the stable API.
 #[doc(hidden)]

@@ -26,22 +26,55 @@ pub const MAX_EDGES_PER_PANEL: usize = 500;
 /// Most edges all panels together may have (at most 208 in the reference cases):
 /// keeps the pairwise self-intersection test of every outline well under a second.
 pub const MAX_EDGES: usize = 5_000;
+/// Longest name (of a pattern or panel) or label (garment and size on a print), in
+/// characters: the reference's are under 40, and every output repeats them.
+pub const MAX_NAME_CHARS: usize = 100;
+
+/// Refuse a name or label longer than [`MAX_NAME_CHARS`] or holding control
+/// characters; `what` says where it is (for the error).
+pub fn check_name(what: &str, name: &str) -> Result<()> {
+    if name.chars().count() > MAX_NAME_CHARS {
+        return Err(Error::Input(format!("{what}: {} is longer than {MAX_NAME_CHARS} characters", crate::message::quote(name))));
+    }
+    if name.chars().any(char::is_control) {
+        return Err(Error::Input(format!("{what}: {} holds a control character (a line break, a tab, ...)", crate::message::quote(name))));
+    }
+    Ok(())
+}
+
+/// What a file that is not JSON looks like, as a hint after the parse error: one
+/// of this tool's YAML files, or other text.
+fn looks_like(text: &str) -> &'static str {
+    let first = text.lines().map(str::trim).find(|l| !l.is_empty() && !l.starts_with('#')).unwrap_or("");
+    if first.starts_with("design:") {
+        "; this is a YAML design file, not a pattern: `garmentcode build --design FILE` builds it into one"
+    } else if first.starts_with("body:") {
+        "; this is a YAML body file, not a pattern: it goes with `garmentcode build --body FILE`"
+    } else if first.starts_with('{') || first.starts_with('[') {
+        ""
+    } else if first.contains(": ") || first.ends_with(':') {
+        "; this looks like YAML, not the JSON of a pattern (specification.json)"
+    } else {
+        "; a pattern is the JSON file specification.json that `garmentcode build` writes"
+    }
+}
 
 impl Pattern {
     /// Parse a specification file's text.
     pub fn from_json(text: &str) -> Result<Pattern> {
-        let v: Value = serde_json::from_str(text).map_err(|e| Error::Input(format!("malformed JSON: {e}")))?;
+        let v: Value = serde_json::from_str(text).map_err(|e| Error::Input(format!("malformed JSON: {e}{}", looks_like(text))))?;
         let mut p = read_pattern(&v)?;
         p.normalize_units()?;
-        p.check_extent()?;
+        p.check_limits()?;
         Ok(p)
     }
 
     /// Refuse geometry no garment has, before any algorithm whose work grows with
     /// it runs: coordinates beyond [`MAX_EXTENT_CM`], control points far outside
     /// their edge, and more panels or edges than [`MAX_PANELS`],
-    /// [`MAX_EDGES_PER_PANEL`] and [`MAX_EDGES`].
-    fn check_extent(&self) -> Result<()> {
+    /// [`MAX_EDGES_PER_PANEL`] and [`MAX_EDGES`]. Reading a specification checks
+    /// this; a pattern built in memory that fails it would not read back.
+    pub fn check_limits(&self) -> Result<()> {
         let far = |x: f64| x.abs() > MAX_EXTENT_CM;
         if self.panels.len() > MAX_PANELS {
             return Err(Error::Input(format!("{} panels: at most {MAX_PANELS} are accepted", self.panels.len())));
@@ -50,7 +83,9 @@ impl Pattern {
         if edges > MAX_EDGES {
             return Err(Error::Input(format!("{edges} edges in all: at most {MAX_EDGES} are accepted")));
         }
+        check_name("name", &self.name)?;
         for p in &self.panels {
+            check_name("pattern.panels", &p.name)?;
             let at = format!("pattern.panels.{}", p.name);
             if p.edges.len() > MAX_EDGES_PER_PANEL {
                 return Err(Error::Input(format!("{at}: {} edges, at most {MAX_EDGES_PER_PANEL} are accepted", p.edges.len())));
@@ -58,7 +93,8 @@ impl Pattern {
             let coords = p.vertices.iter().flatten().chain(&p.translation);
             if let Some(x) = coords.copied().find(|x| far(*x)) {
                 return Err(Error::Input(format!(
-                    "{at}: coordinate {x} cm is beyond ±{MAX_EXTENT_CM} cm (100 m); no garment is that large"
+                    "{at}: coordinate {} cm is beyond ±{MAX_EXTENT_CM} cm (100 m); no garment is that large",
+                    crate::message::short(x)
                 )));
             }
             for (i, e) in p.edges.iter().enumerate() {
@@ -651,7 +687,7 @@ fn boolean(v: &Value, path: &str) -> Result<bool> {
 fn number(v: &Value, path: &str) -> Result<f64> {
     let x = v.as_f64().ok_or_else(|| Error::Input(format!("{path}: expected a number, got {}", kind(v))))?;
     if !x.is_finite() {
-        return Err(Error::Input(format!("{path}: expected a finite number, got {x}")));
+        return Err(Error::Input(format!("{path}: expected a finite number, got {}", crate::message::short(x))));
     }
     Ok(x)
 }

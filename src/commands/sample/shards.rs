@@ -57,14 +57,21 @@ fn folder_file_name(key: &str, rest: &str) -> String {
     if rest == "specification.json" || rest.starts_with("pattern.") || mesh_file { format!("{key}_{rest}") } else { rest.to_string() }
 }
 
-/// Split a member name into its sample index, key and suffix. The suffix is a
-/// plain file name as this tool writes them (letters, digits, `_ - .`, not
-/// starting or ending with a dot), so unpacking cannot write anywhere else.
+/// Split a member name into its sample index, key and suffix. The suffix is one
+/// of the files a sample has (see [`is_sample_file`]), so unpacking writes
+/// nothing else and nowhere else.
 fn split_member(name: &str) -> Option<(u64, &str, &str)> {
     let (key, rest) = name.split_once('.')?;
     let index = store::index_of(key)?;
-    let plain = rest.bytes().all(|b| b.is_ascii_alphanumeric() || b"_-.".contains(&b));
-    (plain && !rest.is_empty() && !rest.starts_with('.') && !rest.ends_with('.')).then_some((index, key, rest))
+    is_sample_file(rest).then_some((index, key, rest))
+}
+
+/// Whether `rest` names a file of a sample in a shard (as [`member_name`] makes
+/// them): the pattern, its drawings, the mesh files, the design, body and record.
+fn is_sample_file(rest: &str) -> bool {
+    let mesh_file = garmentcode::mesh::write::FILE_SUFFIXES.iter().any(|suffix| suffix.strip_prefix('_') == Some(rest));
+    mesh_file
+        || ["specification.json", "pattern.svg", "pattern.png", "design_params.yaml", "body_measurements.yaml", store::INFO].contains(&rest)
 }
 
 /// Write `value` as zero-padded octal into `field`, ending with NUL.

@@ -128,19 +128,17 @@ impl<'a> Settings<'a> {
 /// FNV-1a (64 bit) of the design space and the bodies: a stable fingerprint of
 /// everything besides the seed that decides the samples.
 fn fingerprint(sampler: &DatasetSampler) -> String {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    let mut h = crate::output::Fnv1a::default();
     let mut eat = |s: &str| {
-        for b in s.bytes().chain([0xff]) {
-            h ^= u64::from(b);
-            h = h.wrapping_mul(0x0100_0000_01b3);
-        }
+        h.write(s.as_bytes());
+        h.write(&[0xff]);
     };
     eat(&sampler.space().to_yaml());
     for b in sampler.bodies() {
         eat(&b.name);
         eat(&b.body.to_yaml());
     }
-    format!("{h:016x}")
+    format!("{:016x}", h.finish())
 }
 
 fn tmp_name(name: &str) -> String {
