@@ -460,6 +460,27 @@ fn a_re_render_never_deletes_an_edited_design_file() {
 }
 
 #[test]
+fn what_build_writes_the_other_commands_read() {
+    // Level shoulders make the back neckline an arc of a radius beyond 100 m: it is
+    // written as the straight edge it is, which check, render, mesh and print read.
+    let dir = scratch("level_shoulders");
+    let body = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("garments/data/bodies/mean_all.yaml")).unwrap();
+    let level: String =
+        body.lines().map(|l| if l.trim_start().starts_with("shoulder_incl:") { "  shoulder_incl: 0.001".to_string() } else { l.to_string() } + "\n").collect();
+    assert_ne!(body, level);
+    std::fs::write(dir.join("level.yaml"), level).unwrap();
+    for design in ["t-shirt", "shirt-dress", "jumpsuit"] {
+        let o = run(&["build", "-d", design, "-b", "level.yaml", "-o", design, "--no-png"], &dir);
+        assert_eq!(code(&o), 0, "{design}: {}", stderr(&o));
+        let spec = format!("{design}/specification.json");
+        for args in [vec!["check", &spec], vec!["render", &spec, "-o", "r", "--no-png"], vec!["print", &spec, "-o", "p"]] {
+            let o = run(&args, &dir);
+            assert_eq!(code(&o), 0, "{args:?}: {}", stderr(&o));
+        }
+    }
+}
+
+#[test]
 fn check_on_a_yaml_file_says_what_the_file_is() {
     let dir = scratch("check_yaml");
     assert_eq!(code(&run(&["build", "-o", "out", "--no-png"], &dir)), 0);
@@ -668,4 +689,50 @@ fn png_resolution_and_background_are_chosen() {
     let o = run(&["render", "default/specification.json", "--out", "r", "--dpi", "0"], &dir);
     assert_eq!(code(&o), 2);
     assert!(stderr(&o).contains("dots per inch"), "{}", stderr(&o));
+}
+
+#[test]
+fn a_huge_drawing_is_drawn_smaller_with_a_warning() {
+    // A pattern in units of a third of a metre is 33 times larger in cm: its PNG
+    // at 3 px per cm would be 11,219 × 10,603 px (490 MB while drawn).
+    let dir = scratch("huge_png");
+    assert_eq!(code(&run(&["build", "-o", "out", "--no-png"], &dir)), 0);
+    let mut spec: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("out/specification.json")).unwrap()).unwrap();
+    spec["properties"]["units_in_meter"] = serde_json::json!(3);
+    std::fs::write(dir.join("u3.json"), spec.to_string()).unwrap();
+    let o = run(&["render", "u3.json", "-o", "u3"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(stderr(&o).contains("warning: pattern.png drawn at") && stderr(&o).contains("25 million pixels"), "{}", stderr(&o));
+    let (w, h, _) = png_header(&std::fs::read(dir.join("u3/pattern.png")).unwrap());
+    assert!(u64::from(w) * u64::from(h) <= garmentcode::draw::MAX_PNG_PIXELS && w > 4000, "{w} × {h}");
+}
+
+#[test]
+fn bash_completion_offers_built_in_names_and_files() {
+    let dir = scratch("completion");
+    let o = run(&["completions", "bash"], &dir);
+    assert_eq!(code(&o), 0);
+    std::fs::write(dir.join("c.bash"), &o.stdout).unwrap();
+    std::fs::write(dir.join("tshirt-mine.yaml"), "").unwrap();
+    let complete = |words: &str, cur: &str, prev: &str| {
+        let script = format!(
+            "source c.bash; COMP_WORDS=({words}); COMP_CWORD=$((${{#COMP_WORDS[@]}} - 1)); _garmentcode garmentcode {cur} {prev}; echo \"${{COMPREPLY[@]}}\""
+        );
+        match std::process::Command::new("bash").arg("-c").arg(script).current_dir(&dir).output() {
+            Ok(o) => Some(String::from_utf8_lossy(&o.stdout).trim().to_string()),
+            Err(_) => None,
+        }
+    };
+    let Some(design) = complete("garmentcode build --design t", "t", "--design") else {
+        eprintln!("SKIPPED: no bash on this machine");
+        return;
+    };
+    assert_eq!(design, "t-shirt tshirt-mine.yaml");
+    assert_eq!(complete("garmentcode build --body mean_", "mean_", "--body").unwrap(), "mean_all mean_female mean_male");
+    assert_eq!(complete("garmentcode schema -d jump", "jump", "-d").unwrap(), "jumpsuit");
+    // zsh and fish offer files beside the names too.
+    let zsh = stdout(&run(&["completions", "zsh"], &dir));
+    assert!(zsh.contains(":{compadd t-shirt fitted-dress sundress shirt-dress jumpsuit; _files}'"));
+    let fish = stdout(&run(&["completions", "fish"], &dir));
+    assert!(fish.contains("-l design") && fish.contains("-r -F -a \"t-shirt"));
 }

@@ -551,3 +551,55 @@ fn the_printed_design_space_samples_the_same_dataset() {
     sample_ok(&[&args[..], &["--out", s(&c), "--design-space", s(&dir.join("preset.yaml"))]].concat());
     assert!(index(&a) != index(&c), "the t-shirt preset as a design space draws the same garments");
 }
+
+/// Offsets of the member headers of a tar archive.
+fn header_offsets(tar: &[u8]) -> Vec<usize> {
+    let mut out = Vec::new();
+    let mut at = 0;
+    while tar[at..at + 512].iter().any(|&b| b != 0) {
+        out.push(at);
+        let size = usize::from_str_radix(std::str::from_utf8(&tar[at + 124..at + 135]).unwrap(), 8).unwrap();
+        at += 512 + size.next_multiple_of(512);
+    }
+    out
+}
+
+#[test]
+fn cut_or_foreign_shards_are_refused_whole() {
+    let dir = scratch("cut_shards");
+    let data = dir.join("data");
+    sample_ok(&["--n", "5", "--seed", "2", "--layout", "shards:5", "--out", s(&data)]);
+    let shard = fs::read(data.join("shard-000000.tar")).unwrap();
+    let headers = header_offsets(&shard);
+    assert_eq!(headers.len(), 20, "5 samples of 4 files");
+    let end = [0u8; 1024];
+    let unpack_err = |name: &str, bytes: Vec<u8>| {
+        // Beside a copy of the index, as a dataset's shards are.
+        let d = dir.join(name);
+        fs::create_dir_all(&d).unwrap();
+        fs::copy(data.join("index.jsonl"), d.join("index.jsonl")).unwrap();
+        fs::write(d.join("shard-000000.tar"), bytes).unwrap();
+        let out = dir.join(format!("{name}-out"));
+        let o = sample(&["--unpack", s(&d.join("shard-000000.tar")), "--out", s(&out)]);
+        assert_eq!(o.status.code(), Some(2), "{name}");
+        assert!(!out.exists(), "{name}: nothing unpacked");
+        String::from_utf8_lossy(&o.stderr).into_owned()
+    };
+    // Cut inside a sample (between two of its files), end blocks added.
+    let err = unpack_err("inside", [&shard[..headers[7]], &end[..]].concat());
+    assert!(err.contains("rand_0000001 lacks") && err.contains("cut"), "{err}");
+    // Cut exactly between two samples: the index beside it lists five.
+    let err = unpack_err("between", [&shard[..headers[8]], &end[..]].concat());
+    assert!(err.contains("holds 2 samples where the index beside it lists 5"), "{err}");
+    // A member with a suffix no sample file has.
+    let mut foreign = shard.clone();
+    let h = headers[2];
+    let name = String::from_utf8(foreign[h..h + 100].iter().copied().take_while(|&b| b != 0).collect()).unwrap();
+    assert_eq!(name, "rand_0000000.sample_info.json");
+    foreign[h + name.len() - 4..h + name.len()].copy_from_slice(b"exe\0");
+    foreign[h + 148..h + 156].copy_from_slice(b"        ");
+    let sum: u32 = foreign[h..h + 512].iter().map(|&b| u32::from(b)).sum();
+    foreign[h + 148..h + 156].copy_from_slice(format!("{sum:06o}\0 ").as_bytes());
+    let err = unpack_err("foreign", foreign);
+    assert!(err.contains("is not a sample file"), "{err}");
+}

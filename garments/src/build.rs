@@ -179,12 +179,14 @@ pub fn build_valid_in(arena: &mut Arena, design: &Design, body: &Body, name: &st
 
 /// The pattern, if it would read back: its numbers finite and within the limits
 /// of a specification file ([`Pattern::check_limits`]), so that what `build`
-/// writes, `check`, `render`, `mesh` and `print` read. A garment program can
+/// writes, `check`, `render`, `mesh` and `print` read (an arc of a radius beyond
+/// 100 m is written as the straight edge it is). A garment program can
 /// compute NaN, or a control point far off a tiny edge, on extreme designs (seen
 /// once in 100,000 random ones); such a pattern is refused (the dataset sampler
 /// draws again).
-fn readable(pattern: Pattern) -> Result<Pattern, BuildError> {
+fn readable(mut pattern: Pattern) -> Result<Pattern, BuildError> {
     let fail = |what: String| BuildError::Geometry(garmentcode::Error::Geometry(what));
+    pattern.straighten_flat_arcs();
     if let Some(place) = pattern.non_finite() {
         return Err(fail(format!("the pattern has a number that is not finite at {place}")));
     }

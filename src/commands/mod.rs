@@ -167,6 +167,27 @@ pub fn completions(args: crate::cli::CompletionsArgs) -> Result<i32, CliError> {
     let mut cmd = crate::cli::Cli::command();
     let mut script = Vec::new();
     clap_complete::generate(args.shell, &mut cmd, "garmentcode", &mut script);
-    out!("{}", String::from_utf8_lossy(&script));
+    out!("{}", with_files(args.shell, &String::from_utf8_lossy(&script)));
     Ok(0)
+}
+
+/// The completion script with file names offered beside the built-in design and
+/// body names (clap's scripts offer only a value's listed names).
+fn with_files(shell: clap_complete::Shell, script: &str) -> String {
+    use clap_complete::Shell;
+    let lists = [garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect::<Vec<_>>(), garments::builtin::BODIES.iter().map(|(n, _)| *n).collect()];
+    let mut script = script.to_string();
+    for names in lists.iter().map(|l| l.join(" ")) {
+        let (from, to) = match shell {
+            Shell::Bash => (
+                format!("COMPREPLY=($(compgen -W \"{names}\" -- \"${{cur}}\"))"),
+                format!("COMPREPLY=($(compgen -W \"{names}\" -- \"${{cur}}\") $(compgen -f -- \"${{cur}}\"))"),
+            ),
+            Shell::Zsh => (format!(":({names})'"), format!(":{{compadd {names}; _files}}'")),
+            Shell::Fish => (format!("-r -f -a \"{}", names.split(' ').next().unwrap_or_default()), format!("-r -F -a \"{}", names.split(' ').next().unwrap_or_default())),
+            _ => continue,
+        };
+        script = script.replace(&from, &to);
+    }
+    script
 }

@@ -65,8 +65,20 @@ impl Pattern {
         let v: Value = serde_json::from_str(text).map_err(|e| Error::Input(format!("malformed JSON: {e}{}", looks_like(text))))?;
         let mut p = read_pattern(&v)?;
         p.normalize_units()?;
+        p.straighten_flat_arcs();
         p.check_limits()?;
         Ok(p)
+    }
+
+    /// Write every flat arc ([`Curvature::is_flat_arc`]: radius beyond 100 m,
+    /// under 180°) as the straight edge it is, so that a nearly straight neckline
+    /// (a body with level shoulders) reads and writes within the limits.
+    pub fn straighten_flat_arcs(&mut self) {
+        for e in self.panels.iter_mut().flat_map(|p| &mut p.edges) {
+            if e.curvature.as_ref().is_some_and(Curvature::is_flat_arc) {
+                e.curvature = None;
+            }
+        }
     }
 
     /// Refuse geometry no garment has, before any algorithm whose work grows with

@@ -538,16 +538,73 @@ fn shard_samples<R: io::Read + io::Seek>(tar: &mut TarReader<R>) -> Result<Vec<(
     if samples.is_empty() {
         return Err("holds no sample".into());
     }
+    // Every sample of a dataset has the same files (the run's formats), always
+    // its design, body and record: a sample with fewer was cut off.
+    let suffixes = |members: &[Member], key: &str| -> std::collections::BTreeSet<String> {
+        members.iter().map(|m| m.name[key.len() + 1..].to_string()).collect()
+    };
+    let first = suffixes(&samples[0].1, &samples[0].0);
+    for (key, members) in &samples {
+        let have = suffixes(members, key);
+        let always = ["design_params.yaml", "body_measurements.yaml", store::INFO];
+        let missing: Vec<&str> =
+            always.iter().copied().chain(first.iter().map(String::as_str)).filter(|f| !have.contains(*f)).collect();
+        if !missing.is_empty() {
+            return Err(format!("{key} lacks {}: the shard was cut or damaged", missing.join(", ")));
+        }
+        if have != first {
+            return Err(format!("{key} has other files than {}: not one dataset's shard", samples[0].0));
+        }
+    }
     Ok(samples)
+}
+
+/// How many samples the dataset's index (`index*.jsonl` in `dir`) lists for
+/// each shard file name; empty when `dir` has no index.
+fn index_counts(dir: &Path) -> Result<std::collections::BTreeMap<String, usize>, String> {
+    use std::io::BufRead;
+    let mut counts = std::collections::BTreeMap::new();
+    let Ok(entries) = fs::read_dir(dir) else { return Ok(counts) };
+    for e in entries.flatten() {
+        let name = e.file_name().to_string_lossy().into_owned();
+        if !(name.starts_with("index") && name.ends_with(".jsonl")) {
+            continue;
+        }
+        let file = fs::File::open(e.path()).map_err(|err| format!("{}: cannot read: {err}", e.path().display()))?;
+        for line in io::BufReader::new(file).lines() {
+            let line = line.map_err(|err| format!("{}: cannot read: {err}", e.path().display()))?;
+            let shard = serde_json::from_str::<serde_json::Value>(&line).ok().and_then(|v| v["shard"].as_str().map(str::to_string));
+            if let Some(shard) = shard {
+                *counts.entry(shard).or_insert(0) += 1;
+            }
+        }
+    }
+    Ok(counts)
 }
 
 /// Check that each of `shards` is a whole shard archive (headers only: what
 /// [`unpack`] needs), before anything is unpacked.
+/// A shard with fewer samples than the dataset's index beside it lists for it
+/// was cut between two samples: refused too.
 pub fn check_archives(shards: &[PathBuf]) -> Result<(), String> {
+    let mut indexes = std::collections::BTreeMap::new();
     for path in shards {
         let show = path.display();
         let mut tar = TarReader::open(path)?;
-        shard_samples(&mut tar).map_err(|e| format!("{show}: {e}"))?;
+        let samples = shard_samples(&mut tar).map_err(|e| format!("{show}: {e}"))?;
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        if !indexes.contains_key(&dir) {
+            indexes.insert(dir.clone(), index_counts(&dir)?);
+        }
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        if let Some(&listed) = indexes[&dir].get(&name)
+            && listed != samples.len()
+        {
+            return Err(format!(
+                "{show}: holds {} samples where the index beside it lists {listed}: the shard was cut or damaged",
+                samples.len()
+            ));
+        }
     }
     Ok(())
 }
