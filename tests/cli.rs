@@ -507,6 +507,19 @@ fn many_body_problems_come_one_a_line_and_huge_values_are_cut_short() {
     assert_eq!(code(&o), 2);
     let err = stderr(&o);
     assert!(err.len() < 4000 && err.contains("(10485760 characters)") && err.contains("1e308"), "{}", &err[..err.len().min(4000)]);
+    // In a pattern: a huge string where a keyword goes, a huge number of units.
+    assert_eq!(code(&run(&["build", "-o", "t", "--no-png"], &dir)), 0);
+    let mut spec: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("t/specification.json")).unwrap()).unwrap();
+    spec["properties"]["curvature_coords"] = serde_json::json!(huge);
+    std::fs::write(dir.join("cc.json"), spec.to_string()).unwrap();
+    spec["properties"]["curvature_coords"] = serde_json::json!("relative");
+    spec["properties"]["units_in_meter"] = serde_json::json!(1e308);
+    std::fs::write(dir.join("units.json"), spec.to_string()).unwrap();
+    for (file, shown) in [("cc.json", "(10485760 characters)"), ("units.json", "got 1e308")] {
+        let o = run(&["check", file], &dir);
+        assert_eq!(code(&o), 2);
+        assert!(stderr(&o).len() < 400 && stderr(&o).contains(shown), "{}", &stderr(&o)[..stderr(&o).len().min(400)]);
+    }
     let design = format!("design:\n  meta:\n    upper:\n      v: {huge}\n  waistband:\n    waist:\n      v: 1e308\n");
     std::fs::write(dir.join("huge_design.yaml"), design).unwrap();
     let o = run(&["build", "-d", "huge_design.yaml", "-o", "out"], &dir);

@@ -218,7 +218,8 @@ impl Pattern {
         let u = self.properties.units_in_meter;
         if !(u.is_finite() && (1.0..=1000.0).contains(&u)) {
             return Err(Error::Input(format!(
-                "properties.units_in_meter: expected 1 (metres) to 1000 (millimetres), usually 100 (centimetres), got {u}"
+                "properties.units_in_meter: expected 1 (metres) to 1000 (millimetres), usually 100 (centimetres), got {}",
+                crate::message::short(u)
             )));
         }
         if u != 100.0 {
@@ -537,7 +538,7 @@ fn read_properties(v: &Value) -> Result<Properties> {
             "curvature_coords" => {
                 let s = string(x, &path)?;
                 if s != "relative" && s != "absolute" {
-                    return Err(Error::Input(format!("{path}: expected \"relative\" or \"absolute\", got \"{s}\"")));
+                    return Err(Error::Input(format!("{path}: expected \"relative\" or \"absolute\", got {}", crate::message::quote(s))));
                 }
                 pr.curvature_coords = s.to_string();
             }
@@ -551,6 +552,7 @@ fn read_properties(v: &Value) -> Result<Properties> {
 }
 
 fn read_panel(name: &str, v: &Value, absolute: bool) -> Result<PanelSpec> {
+    check_name("pattern.panels", name)?;
     let path = format!("pattern.panels.{name}");
     let m = obj(v, &path)?;
     let translation = vec_n::<3>(get(m, "translation", &path)?, &format!("{path}.translation"))?;
@@ -660,13 +662,14 @@ fn read_stitch(v: &Value, path: &str) -> Result<StitchSpec> {
         let sp = format!("{path}[{k}]");
         let m = obj(s, &sp)?;
         let panel = string(get(m, "panel", &sp)?, &format!("{sp}.panel"))?.to_string();
+        check_name(&format!("{sp}.panel"), &panel)?;
         let edge = index(get(m, "edge", &sp)?, &format!("{sp}.edge"))?;
         sides.push(StitchSide { panel, edge });
     }
     let right_wrong = match list.get(2) {
         None => false,
         Some(Value::String(s)) if s == "right_wrong" => true,
-        Some(other) => return Err(Error::Input(format!("{path}[2]: expected \"right_wrong\", got {other}"))),
+        Some(other) => return Err(Error::Input(format!("{path}[2]: expected \"right_wrong\", got {}", kind(other)))),
     };
     let b = sides.pop().expect("two sides");
     let a = sides.pop().expect("two sides");
@@ -738,7 +741,7 @@ fn kind(v: &Value) -> String {
         Value::Null => "null".into(),
         Value::Bool(b) => format!("{b}"),
         Value::Number(n) => format!("the number {n}"),
-        Value::String(s) => format!("the string \"{s}\""),
+        Value::String(s) => format!("the string {}", crate::message::quote(s)),
         Value::Array(_) => "a list".into(),
         Value::Object(_) => "an object".into(),
     }
