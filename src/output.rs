@@ -422,6 +422,8 @@ mod tests {
         fs::create_dir_all(d.join(format!(".out.tmp-{dead}"))).unwrap();
         fs::create_dir_all(d.join(format!(".out.old-{dead}"))).unwrap();
         fs::write(d.join(format!(".out.old-{dead}/specification.json")), "previous").unwrap();
+        let manifest = format!("{:016x} specification.json\n", fnv1a(b"previous"));
+        fs::write(d.join(format!(".out.old-{dead}/{MANIFEST}")), manifest).unwrap();
         fs::create_dir_all(d.join(format!(".other.tmp-{dead}"))).unwrap();
         // The folder itself is missing: the old copy is put back, then replaced.
         set(&["checks.json"]).write_folder(&out, false).unwrap();

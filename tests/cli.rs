@@ -465,8 +465,10 @@ fn what_build_writes_the_other_commands_read() {
     // written as the straight edge it is, which check, render, mesh and print read.
     let dir = scratch("level_shoulders");
     let body = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("garments/data/bodies/mean_all.yaml")).unwrap();
-    let level: String =
-        body.lines().map(|l| if l.trim_start().starts_with("shoulder_incl:") { "  shoulder_incl: 0.001".to_string() } else { l.to_string() } + "\n").collect();
+    let level: String = body
+        .lines()
+        .map(|l| if l.trim_start().starts_with("shoulder_incl:") { "  shoulder_incl: 0.001".to_string() } else { l.to_string() } + "\n")
+        .collect();
     assert_ne!(body, level);
     std::fs::write(dir.join("level.yaml"), level).unwrap();
     for design in ["t-shirt", "shirt-dress", "jumpsuit"] {

@@ -175,7 +175,10 @@ pub fn completions(args: crate::cli::CompletionsArgs) -> Result<i32, CliError> {
 /// body names (clap's scripts offer only a value's listed names).
 fn with_files(shell: clap_complete::Shell, script: &str) -> String {
     use clap_complete::Shell;
-    let lists = [garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect::<Vec<_>>(), garments::builtin::BODIES.iter().map(|(n, _)| *n).collect()];
+    let lists = [
+        garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect::<Vec<_>>(),
+        garments::builtin::BODIES.iter().map(|(n, _)| *n).collect(),
+    ];
     let mut script = script.to_string();
     for names in lists.iter().map(|l| l.join(" ")) {
         let (from, to) = match shell {
@@ -184,7 +187,10 @@ fn with_files(shell: clap_complete::Shell, script: &str) -> String {
                 format!("COMPREPLY=($(compgen -W \"{names}\" -- \"${{cur}}\") $(compgen -f -- \"${{cur}}\"))"),
             ),
             Shell::Zsh => (format!(":({names})'"), format!(":{{compadd {names}; _files}}'")),
-            Shell::Fish => (format!("-r -f -a \"{}", names.split(' ').next().unwrap_or_default()), format!("-r -F -a \"{}", names.split(' ').next().unwrap_or_default())),
+            Shell::Fish => (
+                format!("-r -f -a \"{}", names.split(' ').next().unwrap_or_default()),
+                format!("-r -F -a \"{}", names.split(' ').next().unwrap_or_default()),
+            ),
             _ => continue,
         };
         script = script.replace(&from, &to);

@@ -59,6 +59,15 @@ fn looks_like(text: &str) -> &'static str {
     }
 }
 
+impl Curvature {
+    /// Whether this is an arc under 180° of a radius beyond [`MAX_EXTENT_CM`]
+    /// (100 m), or an infinite one: a straight line to within `chord² / 8r`
+    /// (under 0.03 cm for a 50 cm edge), written straight.
+    pub fn is_flat_arc(&self) -> bool {
+        matches!(*self, Curvature::Circle { radius, large_arc: false, .. } if radius.abs() > MAX_EXTENT_CM)
+    }
+}
+
 impl Pattern {
     /// Parse a specification file's text.
     pub fn from_json(text: &str) -> Result<Pattern> {

@@ -121,15 +121,6 @@ pub enum Curvature {
     },
 }
 
-impl Curvature {
-    /// Whether this is an arc under 180° of a radius beyond
-    /// [`crate::io::MAX_EXTENT_CM`] (100 m), or an infinite one: a straight line
-    /// to within `chord² / 8r` (under 0.03 cm for a 50 cm edge), written straight.
-    pub fn is_flat_arc(&self) -> bool {
-        matches!(*self, Curvature::Circle { radius, large_arc: false, .. } if radius.abs() > crate::io::MAX_EXTENT_CM)
-    }
-}
-
 /// One written stitch.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub struct StitchSpec {

@@ -547,8 +547,7 @@ fn shard_samples<R: io::Read + io::Seek>(tar: &mut TarReader<R>) -> Result<Vec<(
     for (key, members) in &samples {
         let have = suffixes(members, key);
         let always = ["design_params.yaml", "body_measurements.yaml", store::INFO];
-        let missing: Vec<&str> =
-            always.iter().copied().chain(first.iter().map(String::as_str)).filter(|f| !have.contains(*f)).collect();
+        let missing: Vec<&str> = always.iter().copied().chain(first.iter().map(String::as_str)).filter(|f| !have.contains(*f)).collect();
         if !missing.is_empty() {
             return Err(format!("{key} lacks {}: the shard was cut or damaged", missing.join(", ")));
         }
@@ -720,9 +719,13 @@ mod tests {
         let big = vec![1u8; 4 << 20];
         let info = b"{}".to_vec();
         let bytes = tar(&[
+            ("rand_0000000.body_measurements.yaml".into(), &info),
             ("rand_0000000.boxmesh.obj".into(), &big),
+            ("rand_0000000.design_params.yaml".into(), &info),
             ("rand_0000000.sample_info.json".into(), &info),
+            ("rand_0000001.body_measurements.yaml".into(), &info),
             ("rand_0000001.boxmesh.obj".into(), &big),
+            ("rand_0000001.design_params.yaml".into(), &info),
             ("rand_0000001.sample_info.json".into(), &info),
         ])
         .unwrap();
@@ -733,9 +736,9 @@ mod tests {
         assert_eq!(keys, ["rand_0000000", "rand_0000001"]);
         assert!(read.get() < 1 << 20, "listing read {} of {} bytes", read.get(), bytes.len());
         // A member is read when asked for.
-        assert_eq!(reader.read(&samples[1].1[1], 2).unwrap(), info);
-        assert_eq!(reader.read(&samples[0].1[0], MAX_MEMBER).unwrap(), big);
-        assert!(reader.read(&samples[0].1[0], 1 << 20).unwrap_err().contains("more than a file of a sample has"));
+        assert_eq!(reader.read(&samples[1].1[3], 2).unwrap(), info);
+        assert_eq!(reader.read(&samples[0].1[1], MAX_MEMBER).unwrap(), big);
+        assert!(reader.read(&samples[0].1[1], 1 << 20).unwrap_err().contains("more than a file of a sample has"));
     }
 
     #[test]
