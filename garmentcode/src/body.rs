@@ -622,7 +622,10 @@ mod tests {
         assert!(e.starts_with("p.yaml: line 3: body.waist: 0.7 cm is outside the plausible range"), "{e}");
         // An unknown base is named, with a suggestion and the known ones.
         let e = Body::from_yaml_with_bases("body:\n  base: mean_femal\n", "p.yaml", &bases).unwrap_err().to_string();
-        assert!(e.contains("line 2: body.base: no built-in body `mean_femal` (did you mean `mean_female`?) (built-in: mean_female)"), "{e}");
+        assert!(
+            e.contains("line 2: body.base: no built-in body `mean_femal` (did you mean `mean_female`?) (built-in: mean_female)"),
+            "{e}"
+        );
         assert!(!e.contains("missing"), "{e}");
         // Without the built-in bodies, or without a base, nothing is filled in.
         let e = Body::from_yaml("body:\n  base: mean_female\n", "p.yaml").unwrap_err().to_string();

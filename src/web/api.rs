@@ -380,7 +380,9 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
             // Problems name their measurement (`body.waist: ...`); the others
             // (derived values that make no sense) are about the whole body.
             let b = Body::from_entries(&entries, garments::builtin::BODIES).map_err(|problems| {
-                ApiError::from_problems(problems.into_iter().map(|p| if p.starts_with("body.") { p } else { format!("body: {p}") }).collect())
+                ApiError::from_problems(
+                    problems.into_iter().map(|p| if p.starts_with("body.") { p } else { format!("body: {p}") }).collect(),
+                )
             })?;
             let label = if map.contains_key("measurements") { label } else { base.to_string() };
             Ok((label, b))
