@@ -124,6 +124,32 @@ fn bad_bodies_and_missing_files_are_refused_clearly() {
 }
 
 #[test]
+fn a_body_file_may_give_a_few_measurements_over_a_built_in_body() {
+    let dir = scratch("partial_body");
+    std::fs::write(dir.join("me.yaml"), "body:\n  base: mean_female\n  waist: 70.0\n  hips: 101.5\n").unwrap();
+    let o = run(&["build", "--body", "me.yaml", "--out", "out", "--no-png"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let written = std::fs::read_to_string(dir.join("out/body_measurements.yaml")).unwrap();
+    let body = garmentcode::Body::from_yaml(&written, "written").unwrap();
+    let base = garments::builtin::body("mean_female").unwrap();
+    assert_eq!((body.waist, body.hips, body.height, body.arm_length), (70.0, 101.5, base.height, base.arm_length));
+    // The same file gives the same body to `sample --bodies`.
+    let o = run(&["sample", "-n", "1", "-s", "1", "--bodies", "me.yaml", "-o", "data"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let sampled = std::fs::read_to_string(dir.join("data/rand_0000000/body_measurements.yaml")).unwrap();
+    assert_eq!(garmentcode::Body::from_yaml(&sampled, "s").unwrap().waist, 70.0);
+    // Errors name the file, the line, the measurement and its range; an unknown
+    // base gets a suggestion.
+    std::fs::write(dir.join("bad.yaml"), "body:\n  base: mean_femal\n  waist: 7000\n").unwrap();
+    let o = run(&["build", "--body", "bad.yaml", "--out", "bad"], &dir);
+    assert_eq!(code(&o), 2);
+    let err = stderr(&o);
+    assert!(err.contains("bad.yaml: line 2: body.base: no built-in body `mean_femal` (did you mean `mean_female`?)"), "{err}");
+    assert!(err.contains("line 3: body.waist: 7000 cm is outside the plausible range"), "{err}");
+    assert!(!dir.join("bad").exists());
+}
+
+#[test]
 fn rejected_designs_write_nothing() {
     let dir = scratch("rejected");
     // No upper garment, waistband or bottom: the reference refuses an empty pattern.

@@ -281,54 +281,154 @@ derived_values! {
     waist_level "Height of the waist above the floor (height − head − waist line)." = |b| b.height - b.head_l - b.waist_line;
 }
 
+/// One value of a body mapping, as a body file, a request or a Python dict
+/// gives it: the input of [`Body::from_entries`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum BodyValue<'a> {
+    /// A number.
+    Number(f64),
+    /// A string: the `base` body's name, `body_sample`.
+    Text(&'a str),
+    /// No value (`null`, `None`): leaves an optional measurement out.
+    Null,
+    /// Anything else, described for the error (`sequence`, `a JSON object`).
+    Other(String),
+}
+
+impl BodyValue<'_> {
+    /// The value as an error shows it.
+    fn describe(&self) -> String {
+        match self {
+            BodyValue::Number(x) => short(*x).to_string(),
+            BodyValue::Text(s) => quote(s),
+            BodyValue::Null => "null".into(),
+            BodyValue::Other(what) => what.clone(),
+        }
+    }
+}
+
 impl Body {
-    /// Read a body file (`body:` mapping of measurements).
+    /// Read a body file (`body:` mapping of every measurement). A file that
+    /// starts from a built-in body (`base:`) needs the built-in bodies: see
+    /// [`Body::from_yaml_with_bases`].
     pub fn from_yaml(text: &str, file: &str) -> Result<Body, BodyError> {
+        Body::from_yaml_with_bases(text, file, &[])
+    }
+
+    /// Read a body file whose `body:` mapping may start from another body:
+    /// `base: NAME` takes every measurement of the body `NAME` of `bases` (name
+    /// and body file text: `garments::builtin::BODIES`), and the measurements the
+    /// file lists replace the base's. Problems name the line, the measurement and
+    /// its plausible range (see [`Body::from_entries`]).
+    pub fn from_yaml_with_bases(text: &str, file: &str, bases: &[(&str, &str)]) -> Result<Body, BodyError> {
         let fail = |p: String| BodyError { file: file.to_string(), problems: vec![p] };
         let doc = yaml::parse(text).map_err(|e| fail(e.to_string()))?;
         let body = doc.get("body").ok_or_else(|| fail("expected a top-level `body:` mapping of measurements".into()))?;
         let pairs = body.as_map().ok_or_else(|| fail("`body` must be a mapping of measurements".into()))?;
-        let mut values: Vec<Option<f64>> = vec![None; MEASUREMENTS.len()];
-        let mut body_sample = None;
         let mut problems = Vec::new();
+        let mut entries = Vec::with_capacity(pairs.len());
         for (k, v) in pairs {
-            let at = format!("line {}", k.line);
+            let at = format!("line {}: ", k.line);
             let Some(name) = k.as_str() else {
-                problems.push(format!("{at}: measurement names must be strings"));
+                problems.push(format!("{at}measurement names must be strings"));
                 continue;
             };
-            if name == "body_sample" {
-                body_sample = v.as_str().map(str::to_string);
-                continue;
-            }
-            if name.starts_with('_') {
-                continue; // derived values are always recomputed
-            }
-            let Some(i) = MEASUREMENTS.iter().position(|m| m.name == name) else {
-                problems.push(format!("{at}: unknown measurement {}{}", quote(name), did_you_mean(name)));
-                continue;
+            let value = match (&v.value, v.as_f64()) {
+                (_, Some(x)) => BodyValue::Number(x),
+                (Y::Str(s), _) => BodyValue::Text(s),
+                (Y::Null, _) => BodyValue::Null,
+                (other, _) => BodyValue::Other(other.type_name().to_string()),
             };
-            match v.as_f64() {
-                Some(x) if x.is_finite() => values[i] = Some(x),
-                _ => problems.push(format!("{at}: body.{name}: expected a number, got {}", describe(v))),
+            entries.push((at, name, value));
+        }
+        match Body::from_entries(&entries, bases) {
+            Ok(body) if problems.is_empty() => Ok(body),
+            Ok(_) => Err(BodyError { file: file.to_string(), problems }),
+            Err(more) => {
+                problems.extend(more);
+                Err(BodyError { file: file.to_string(), problems })
             }
         }
-        for (m, value) in MEASUREMENTS.iter().zip(&values) {
+    }
+
+    /// A body from the entries of a body mapping, each `(at, name, value)`, where
+    /// `at` prefixes the entry's problems (`line 3: ` in a file, empty
+    /// otherwise). The one reading of body mappings: body files, the web API's
+    /// measurements and the Python package's dicts all come here.
+    ///
+    /// - `base`: the name of a body of `bases` (name and body file text) to start
+    ///   from; the other entries replace its measurements. Without a base every
+    ///   measurement that is not optional must be given.
+    /// - a measurement: a finite number within its plausible range
+    ///   ([`Body::check_measurement`]); `null` leaves an optional one out.
+    /// - `body_sample`: a string (the body mesh of a dataset sample).
+    /// - derived values (`_` names) are ignored: they are always recomputed.
+    ///
+    /// Every problem is listed, one line each; the body must then pass
+    /// [`Body::check_derived`].
+    pub fn from_entries(entries: &[(String, &str, BodyValue<'_>)], bases: &[(&str, &str)]) -> Result<Body, Vec<String>> {
+        let mut problems = Vec::new();
+        let mut base: Option<Body> = None;
+        for (at, _, value) in entries.iter().filter(|(_, name, _)| *name == "base") {
             match value {
-                None if m.optional => {}
-                None => problems.push(format!("body.{}: missing measurement ({})", m.name, m.description)),
-                Some(x) => {
-                    if let Err(e) = Body::check_measurement(m.name, *x) {
-                        problems.push(format!("body.{}: {e}", m.name));
+                BodyValue::Text(name) => match bases.iter().find(|(n, _)| n == name) {
+                    Some((n, text)) => {
+                        base = Some(Body::from_yaml(text, &format!("<body {n}>")).map_err(|e| vec![format!("{at}body.base: {e}")])?)
                     }
+                    None => {
+                        let known: Vec<&str> = bases.iter().map(|(n, _)| *n).collect();
+                        problems.push(format!(
+                            "{at}body.base: no built-in body {}{} (built-in: {})",
+                            crate::message::quote_name(name),
+                            did_you_mean(name, known.iter().copied()),
+                            if known.is_empty() { "none known here".to_string() } else { known.join(", ") }
+                        ));
+                    }
+                },
+                other => problems.push(format!("{at}body.base: expected the name of a built-in body, got {}", other.describe())),
+            }
+        }
+        let mut values: Vec<Option<f64>> = MEASUREMENTS.iter().map(|m| base.as_ref().and_then(|b| b.get(m.name))).collect();
+        let mut given = vec![false; MEASUREMENTS.len()];
+        let mut body_sample = base.as_ref().and_then(|b| b.body_sample.clone());
+        for (at, name, value) in entries {
+            if *name == "base" || name.starts_with('_') {
+                continue; // the base is read above; derived values are always recomputed
+            }
+            if *name == "body_sample" {
+                if let BodyValue::Text(s) = value {
+                    body_sample = Some(s.to_string());
                 }
+                continue;
+            }
+            let Some(i) = MEASUREMENTS.iter().position(|m| m.name == *name) else {
+                let shown = if name.chars().count() > crate::message::QUOTE_CHARS { quote(name) } else { name.to_string() };
+                problems.push(format!("{at}body.{shown}: unknown measurement{}", did_you_mean(name, Body::measurement_names())));
+                continue;
+            };
+            given[i] = true;
+            match value {
+                BodyValue::Number(x) => match Body::check_measurement(name, *x) {
+                    Ok(()) => values[i] = Some(*x),
+                    Err(e) => problems.push(format!("{at}body.{name}: {e}")),
+                },
+                BodyValue::Null if MEASUREMENTS[i].optional => values[i] = None,
+                other => problems.push(format!("{at}body.{name}: expected a number, got {}", other.describe())),
+            }
+        }
+        // A base that cannot be read is the one problem: the measurements it would
+        // have given are not missing.
+        let has_base = entries.iter().any(|(_, name, _)| *name == "base");
+        for ((m, value), given) in MEASUREMENTS.iter().zip(&values).zip(given) {
+            if value.is_none() && !m.optional && !given && !has_base {
+                problems.push(format!("body.{}: missing measurement ({})", m.name, m.description));
             }
         }
         if !problems.is_empty() {
-            return Err(BodyError { file: file.to_string(), problems });
+            return Err(problems);
         }
         let body = Body::from_values(&values, body_sample);
-        body.check_derived().map_err(|problems| BodyError { file: file.to_string(), problems })?;
+        body.check_derived()?;
         Ok(body)
     }
 
@@ -414,7 +514,7 @@ impl Body {
     /// which the caller prefixes).
     pub fn check_measurement(name: &str, x: f64) -> Result<(), String> {
         let Some(m) = Body::measurement(name) else {
-            return Err(format!("unknown measurement{}", did_you_mean(name)));
+            return Err(format!("unknown measurement{}", did_you_mean(name, Body::measurement_names())));
         };
         if !x.is_finite() {
             return Err(format!("expected a finite number, got {}", short(x)));
@@ -454,9 +554,9 @@ fn round4(x: f64) -> f64 {
     (x * 1e4).round() / 1e4
 }
 
-/// ` (did you mean `NAME`?)` for a measurement name one or two edits away.
-fn did_you_mean(name: &str) -> String {
-    let best = MEASUREMENTS.iter().map(|m| (edit_distance(name, m.name), m.name)).min();
+/// ` (did you mean `NAME`?)` for the closest of `known`, one or two edits away.
+fn did_you_mean<'a>(name: &str, known: impl Iterator<Item = &'a str>) -> String {
+    let best = known.map(|k| (edit_distance(name, k), k)).min();
     match best {
         Some((d, n)) if d <= 2 => format!(" (did you mean `{n}`?)"),
         _ => String::new(),
@@ -475,13 +575,6 @@ fn edit_distance(a: &str, b: &str) -> usize {
         prev = cur;
     }
     prev[b.len()]
-}
-
-fn describe(n: &Node) -> String {
-    match &n.value {
-        Y::Str(s) => quote(s),
-        other => other.type_name().to_string(),
-    }
 }
 
 #[cfg(test)]
@@ -526,6 +619,34 @@ mod tests {
         assert!(Body::check_measurement("arm_pose_angle", 91.0).is_err());
         assert!(Body::check_measurement("heigth", 1.0).unwrap_err().contains("did you mean `height`"));
         assert!(Body::check_measurement("height", f64::NAN).is_err());
+    }
+
+    #[test]
+    fn a_body_file_may_start_from_a_base_body() {
+        let text = mean_female();
+        let bases = [("mean_female", text.as_str())];
+        let base = Body::from_yaml(&text, "f").unwrap();
+        let b = Body::from_yaml_with_bases("body:\n  waist: 70.0\n  base: mean_female\n  hips: 101.5\n", "p.yaml", &bases).unwrap();
+        assert_eq!((b.waist, b.hips), (70.0, 101.5));
+        assert_eq!(b.height, base.height);
+        assert_eq!(b.derived().waist_level, base.derived().waist_level);
+        // Problems name the file, the line, the measurement and its range.
+        let e = Body::from_yaml_with_bases("body:\n  base: mean_female\n  waist: 0.7\n", "p.yaml", &bases).unwrap_err().to_string();
+        assert!(e.starts_with("p.yaml: line 3: body.waist: 0.7 cm is outside the plausible range"), "{e}");
+        // An unknown base is named, with a suggestion and the known ones.
+        let e = Body::from_yaml_with_bases("body:\n  base: mean_femal\n", "p.yaml", &bases).unwrap_err().to_string();
+        assert!(
+            e.contains("line 2: body.base: no built-in body `mean_femal` (did you mean `mean_female`?) (built-in: mean_female)"),
+            "{e}"
+        );
+        assert!(!e.contains("missing"), "{e}");
+        // Without the built-in bodies, or without a base, nothing is filled in.
+        let e = Body::from_yaml("body:\n  base: mean_female\n", "p.yaml").unwrap_err().to_string();
+        assert!(e.contains("no built-in body `mean_female`") && e.contains("none known here"), "{e}");
+        let e = Body::from_yaml_with_bases("body:\n  waist: 70\n", "p.yaml", &bases).unwrap_err().to_string();
+        assert!(e.contains("body.height: missing measurement"), "{e}");
+        let e = Body::from_yaml_with_bases("body:\n  base: 3\n", "p.yaml", &bases).unwrap_err().to_string();
+        assert!(e.contains("body.base: expected the name of a built-in body, got 3"), "{e}");
     }
 
     #[test]

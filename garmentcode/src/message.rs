@@ -21,6 +21,18 @@ pub fn quote(text: &str) -> String {
     }
 }
 
+/// A name as an error message shows it: in backticks when short, else cut as
+/// [`quote`] cuts it.
+///
+/// ```
+/// use garmentcode::message::quote_name;
+/// assert_eq!(quote_name("mean_femal"), "`mean_femal`");
+/// assert!(quote_name(&"n".repeat(5000)).ends_with("(5000 characters)"));
+/// ```
+pub fn quote_name(name: &str) -> String {
+    if name.chars().count() > QUOTE_CHARS { quote(name) } else { format!("`{name}`") }
+}
+
 /// A user's number as an error message shows it: at most 6 significant digits,
 /// in exponent form when very large or very small (never a 309-digit decimal).
 ///

@@ -1,7 +1,7 @@
 //! Built-in bodies and named designs, embedded in the binary.
 
 use garmentcode::io::read_design;
-use garmentcode::{Body, Params};
+use garmentcode::{Body, BodyError, Params};
 
 use crate::Design;
 
@@ -24,6 +24,14 @@ pub fn body(name: &str) -> Option<Body> {
         .iter()
         .find(|(n, _)| *n == name)
         .map(|(n, text)| Body::from_yaml(text, &format!("<built-in body {n}>")).expect("built-in bodies are valid"))
+}
+
+/// Read a body file, which may start from a built-in body: a `body:` mapping
+/// with `base: mean_female` takes that body's measurements, and the ones it
+/// lists replace them (see [`Body::from_yaml_with_bases`]). How the command-line
+/// tool, the web API and the Python package read body files.
+pub fn body_from_yaml(text: &str, file: &str) -> Result<Body, BodyError> {
+    Body::from_yaml_with_bases(text, file, BODIES)
 }
 
 /// Names and YAML of the built-in designs (only the values that differ from the

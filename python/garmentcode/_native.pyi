@@ -2,7 +2,7 @@
 ``garmentcode``)."""
 
 import os
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 
@@ -14,8 +14,9 @@ PathLike = Union[str, os.PathLike]
 #: design name or a design file path.
 DesignLike = Union[Dict[str, Any], str, os.PathLike]
 #: A body: a ``Body``, a built-in body name, a body file path, or a dict of
-#: measurements.
-BodyLike = Union["Body", str, os.PathLike, Dict[str, float]]
+#: measurements (every one, or ``{"base": "mean_female", "waist": 70.0, ...}``:
+#: a few over a built-in body).
+BodyLike = Union["Body", str, os.PathLike, Dict[str, Any]]
 #: A parameter value.
 Value = Union[None, bool, int, float, str]
 
@@ -47,10 +48,13 @@ class Body:
         """Names of the built-in bodies."""
     @staticmethod
     def from_yaml(text: str, name: str = "body") -> "Body":
-        """A body from the text of a body file."""
+        """A body from the text of a body file (``base: NAME`` in its ``body:``
+        mapping starts from a built-in body)."""
     @staticmethod
     def from_dict(d: Dict[str, Any]) -> "Body":
-        """A body from ``{measurement: value}`` (or ``{"body": {...}}``)."""
+        """A body from ``{measurement: value}`` (or ``{"body": {...}}``); with
+        ``"base": NAME`` the measurements not given are the built-in body's (the
+        web API's ``{"base": NAME, "measurements": {...}}`` reads too)."""
     @staticmethod
     def describe(name: str) -> str:
         """What a raw or ``_``-derived measurement is."""
@@ -86,8 +90,20 @@ class DesignSpace:
         """Every parameter at its default."""
     def validate(self, design: DesignLike) -> Dict[str, Value]:
         """The complete checked values of a design; raises DesignError."""
-    def sample(self, seed: int, index: int, bodies: Optional[Union[str, Sequence[str]]] = None) -> Dict[str, Value]:
-        """The design of sample ``index`` of ``garmentcode sample --seed seed``."""
+    @overload
+    def sample(
+        self, seed: int, index: int, bodies: Optional[Union[str, Sequence[str]]] = None, *, with_body: Literal[False] = False
+    ) -> Dict[str, Value]: ...
+    @overload
+    def sample(
+        self, seed: int, index: int, bodies: Optional[Union[str, Sequence[str]]] = None, *, with_body: Literal[True]
+    ) -> Tuple[Dict[str, Value], "Body"]: ...
+    def sample(
+        self, seed: int, index: int, bodies: Optional[Union[str, Sequence[str]]] = None, *, with_body: bool = False
+    ) -> Union[Dict[str, Value], Tuple[Dict[str, Value], "Body"]]:
+        """The design of sample ``index`` of ``garmentcode sample --seed seed``;
+        with ``with_body=True`` ``(design, body)``, the body it was drawn for (as
+        the sample's ``body_measurements.yaml``, named as in ``bodies``)."""
     def json_schema(self) -> Dict[str, Any]:
         """The JSON Schema of design files."""
     def to_yaml(self, design: Optional[DesignLike] = None) -> str:
@@ -97,7 +113,10 @@ class DesignSpace:
     def encode(self, design: DesignLike) -> np.ndarray:
         """A design as floats in [0, 1] (numbers by range, flags, one-hot choices)."""
     def decode(self, vector: Sequence[float]) -> Dict[str, Value]:
-        """The design of a vector (``encode``'s inverse)."""
+        """The design of a vector (``encode``'s inverse): numbers rounded to the
+        parameter's precision, the shortest decimal with the same encoding, so
+        ``decode(encode(d)) == d`` for values such as 0.1 and ``decode(encode(x))``
+        is a fixed point of the round trip for any design."""
     def __len__(self) -> int: ...
 
 class Mesh:
@@ -140,8 +159,8 @@ class Pattern:
     """A sewing pattern, from ``build`` or ``Pattern.from_json``."""
 
     @staticmethod
-    def from_json(source: Union[str, os.PathLike]) -> "Pattern":
-        """Read JSON text or a specification file."""
+    def from_json(source: Union[str, os.PathLike], name: Optional[str] = None) -> "Pattern":
+        """Read JSON text or a specification file; ``name`` names the pattern."""
     @property
     def name(self) -> str: ...
     @property
@@ -199,11 +218,18 @@ def sample_dataset(
     design_space: Optional[Union[PathLike, DesignSpace]] = None,
     shard: Optional[Tuple[int, int]] = None,
     progress: Optional[Callable[[int, int], Any]] = None,
+    quiet: bool = True,
 ) -> str:
-    """``garmentcode sample``; returns the summary's path."""
+    """``garmentcode sample``; returns the summary's path. ``quiet=False`` prints
+    the CLI's messages (resuming, the closing summary line) on stderr."""
 
 def compare_specs(expected: str, actual: str, tol: Optional[float] = None) -> Dict[str, Any]:
     """The parity test's comparison of two specification texts."""
 
 def parse_yaml(text: str) -> Any:
     """YAML text as Python values."""
+
+def _flat_design(design: Dict[str, Any]) -> Dict[str, Value]:
+    """A design dict as flat ``{path: value}``, unchecked (for ``iter_shards``)."""
+
+_MESH_FILE_SUFFIXES: List[str]

@@ -2,9 +2,11 @@
 
 A shard is a tar archive of whole samples; every file of a sample is named after
 its key (``rand_0000042.specification.json``, ``rand_0000042.design_params.yaml``,
-...). :func:`iter_shards` yields one dict per sample, and :class:`ShardDataset`
-wraps it for PyTorch's ``IterableDataset`` (splitting the shards over the
-data-loader's workers) without depending on PyTorch or WebDataset.
+...). :func:`iter_shards` yields one dict per sample, decoded as the rest of the
+package gives them (a design as flat ``{path: value}``, the mesh as a
+:class:`Mesh`), and :class:`ShardDataset` wraps it for PyTorch's
+``IterableDataset`` (splitting the shards over the data-loader's workers) without
+depending on PyTorch or WebDataset.
 """
 
 from __future__ import annotations
@@ -14,7 +16,7 @@ import os
 import tarfile
 from typing import Any, Callable, Dict, Iterator, List, Optional, Sequence, Union
 
-from ._native import parse_yaml
+from ._native import _MESH_FILE_SUFFIXES, Pattern, _flat_design, parse_yaml
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -31,8 +33,16 @@ def shard_paths(source: Union[PathLike, Sequence[PathLike]]) -> List[str]:
     return [os.fspath(p) for p in source]
 
 
+#: Member suffixes of a sample's mesh files (``boxmesh.obj``, ``sim_segmentation.txt``, ...).
+MESH_SUFFIXES = frozenset(s.lstrip("_") for s in _MESH_FILE_SUFFIXES)
+
+
 def _decode(suffix: str, data: bytes) -> Any:
-    """A member's content: JSON and YAML parsed, text decoded, the rest as bytes."""
+    """A member's content: the design as flat ``{path: value}`` (as
+    ``Pattern.design`` and ``DesignSpace.sample`` give it), JSON and YAML parsed,
+    text decoded, the rest as bytes."""
+    if suffix == "design_params.yaml":
+        return _flat_design(parse_yaml(data.decode("utf-8")))
     if suffix.endswith(".json"):
         return json.loads(data)
     if suffix.endswith(".yaml"):
@@ -53,8 +63,13 @@ def iter_shards(
     files. Each sample is ``{"__key__": "rand_0000042", "__shard__": path,
     "specification.json": {...}, "design_params.yaml": {...}, ...}``: one entry per
     file, named by its suffix after the key. With ``decode`` (the default) JSON and
-    YAML files are parsed and SVG decoded to text; without it every value is bytes.
-    ``keys(key)`` may select the samples to read (the others are skipped unread).
+    YAML files are parsed, SVG decoded to text, ``design_params.yaml`` is the
+    design as flat ``{path: value}`` (as ``Pattern.design``), and the mesh files
+    (``--formats mesh``) are one entry ``"mesh"``: the :class:`Mesh` of the
+    sample's pattern, with the arrays of ``Pattern.mesh()`` (its ``files()`` are
+    the shard's mesh files, byte for byte). Without ``decode`` every value is the
+    file's bytes. ``keys(key)`` may select the samples to read (the others are
+    skipped unread).
     """
     for path in shard_paths(source):
         with tarfile.open(path, mode="r:") as tar:
@@ -71,15 +86,27 @@ def iter_shards(
                     sample = {"__key__": key, "__shard__": path, "__wanted__": keys is None or keys(key)}
                 if not sample["__wanted__"]:
                     continue
+                if decode and suffix in MESH_SUFFIXES:
+                    sample["__mesh__"] = True  # made from the specification by _finish
+                    continue
                 handle = tar.extractfile(member)
                 data = handle.read() if handle is not None else b""
+                if decode and suffix == "specification.json":
+                    sample["__spec__"] = data
                 sample[suffix] = _decode(suffix, data) if decode else data
             if sample is not None and sample["__wanted__"]:
                 yield _finish(sample)
 
 
 def _finish(sample: Dict[str, Any]) -> Dict[str, Any]:
+    """A sample without the reader's own entries, its mesh made (when decoding a
+    sample with mesh files): the dataset's box mesh, at the sampler's resolution."""
     del sample["__wanted__"]
+    spec = sample.pop("__spec__", None)
+    if sample.pop("__mesh__", False):
+        if spec is None:
+            raise ValueError(f"{sample['__shard__']}: {sample['__key__']} has mesh files but no specification.json")
+        sample["mesh"] = Pattern.from_json(spec.decode("utf-8"), name=sample["__key__"]).mesh()
     return sample
 
 
@@ -106,6 +133,23 @@ class ShardDataset:
         self.shards = shard_paths(source)
         self.decode = decode
         self.transform = transform
+        self._len: Optional[int] = None
+
+    def __len__(self) -> int:
+        """The number of samples in all the shards (read from the archives'
+        member headers once, skipping the files' contents)."""
+        if self._len is None:
+            count = 0
+            for path in self.shards:
+                with tarfile.open(path, mode="r:") as tar:
+                    count += len({m.name.partition(".")[0] for m in tar if m.isfile()})
+            self._len = count
+        return self._len
+
+    def __repr__(self) -> str:
+        folders = sorted({os.path.dirname(os.path.abspath(p)) for p in self.shards})
+        where = f" in {folders[0]!r}" if len(folders) == 1 else ""
+        return f"ShardDataset({len(self.shards)} shards{where}, decode={self.decode})"
 
     def _worker_shards(self) -> List[str]:
         import sys

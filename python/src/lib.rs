@@ -93,28 +93,55 @@ fn value_from_py(path: &str, o: &Bound<'_, PyAny>) -> PyResult<Value> {
     Err(DesignError::new_err(format!("<dict>: design.{path}: expected a single value (number, bool, string or None), got a {type_name}")))
 }
 
+/// How many dicts a design may nest: the design space's paths are a few levels
+/// deep (a `design` key and `v` leaves add two), so anything deeper is a mistake,
+/// and the limit keeps a deep or self-containing dict from overflowing the stack.
+const MAX_DESIGN_DEPTH: usize = 32;
+
 /// Walk a design mapping into `(path, value)` pairs. A mapping with a `v` key is a
 /// parameter (the reference's layout, other keys such as `range` ignored); another
 /// mapping is a group; anything else is a value. Keys may be dotted paths, and a
-/// top-level `design` key is the design itself (a loaded design file).
-fn flatten(prefix: &str, d: &Bound<'_, PyDict>, out: &mut Vec<(String, Value)>) -> PyResult<()> {
+/// top-level `design` key is the design itself (a loaded design file). `open`
+/// holds the dicts being walked (the path from the top), to refuse a dict that
+/// contains itself and one nested deeper than [`MAX_DESIGN_DEPTH`].
+fn flatten(prefix: &str, d: &Bound<'_, PyDict>, open: &mut Vec<usize>, out: &mut Vec<(String, Value)>) -> PyResult<()> {
+    let id = d.as_ptr() as usize;
+    let at = || if prefix.is_empty() { "design".to_string() } else { format!("design.{}", prefix.chars().take(200).collect::<String>()) };
+    if open.contains(&id) {
+        return Err(DesignError::new_err(format!("<dict>: {}: the dict contains itself", at())));
+    }
+    if open.len() >= MAX_DESIGN_DEPTH {
+        return Err(DesignError::new_err(format!(
+            "<dict>: {}...: nested more than {MAX_DESIGN_DEPTH} dicts deep (a design's parameter paths are a few levels deep)",
+            at()
+        )));
+    }
+    open.push(id);
     for (k, v) in d.iter() {
         let Ok(key) = k.extract::<String>() else {
             return Err(DesignError::new_err(format!("<dict>: design.{prefix}: keys must be strings, got {}", k.repr()?)));
         };
         let path = garmentcode::join_path(prefix, &key);
         if prefix.is_empty() && key == "design" && v.is_instance_of::<PyDict>() {
-            flatten("", v.cast::<PyDict>()?, out)?;
+            flatten("", v.cast::<PyDict>()?, open, out)?;
         } else if let Ok(group) = v.cast::<PyDict>() {
             match group.get_item("v")? {
                 Some(leaf) => out.push((path.clone(), value_from_py(&path, &leaf)?)),
-                None => flatten(&path, group, out)?,
+                None => flatten(&path, group, open, out)?,
             }
         } else {
             out.push((path.clone(), value_from_py(&path, &v)?));
         }
     }
+    open.pop();
     Ok(())
+}
+
+/// A design dict's `(path, value)` pairs (see [`flatten`]).
+fn design_pairs(d: &Bound<'_, PyDict>) -> PyResult<Vec<(String, Value)>> {
+    let mut pairs = Vec::new();
+    flatten("", d, &mut Vec::new(), &mut pairs)?;
+    Ok(pairs)
 }
 
 /// A design from Python: a mapping (nested as the reference's design files, or
@@ -122,8 +149,7 @@ fn flatten(prefix: &str, d: &Bound<'_, PyDict>, out: &mut Vec<(String, Value)>) 
 /// the label the CLI would name it by.
 fn load_design(o: &Bound<'_, PyAny>, space: &garmentcode::DesignSpace) -> PyResult<(Design, String)> {
     if let Ok(d) = o.cast::<PyDict>() {
-        let mut pairs = Vec::new();
-        flatten("", d, &mut pairs)?;
+        let pairs = design_pairs(d)?;
         let design = read_design_pairs(&pairs, "<dict>", space).map_err(|e| DesignError::new_err(e.to_string()))?;
         return Ok((design, "design".into()));
     }
@@ -195,38 +221,54 @@ impl PyBody {
     #[staticmethod]
     #[pyo3(signature = (text, name = "body".to_string()))]
     fn from_yaml(text: &str, name: String) -> PyResult<PyBody> {
-        let body = garmentcode::Body::from_yaml(text, "<text>").map_err(|e| BodyError::new_err(e.to_string()))?;
+        let body = garments::builtin::body_from_yaml(text, "<text>").map_err(|e| BodyError::new_err(e.to_string()))?;
         Ok(PyBody { body, name })
     }
 
-    /// A body from a `{measurement: value}` dict (the `body:` mapping of a body
-    /// file; derived `_` values are ignored and recomputed).
+    /// A body from a `{measurement: value}` dict: the `body:` mapping of a body
+    /// file (also inside `{"body": {...}}`), which may start from a built-in body
+    /// (`{"base": "mean_female", "waist": 70.0}`; the web API's `{"base": ...,
+    /// "measurements": {...}}` reads too). Derived `_` values are ignored and
+    /// recomputed.
     #[staticmethod]
     fn from_dict(d: &Bound<'_, PyDict>) -> PyResult<PyBody> {
-        let d = match d.get_item("body")? {
+        let mut d = match d.get_item("body")? {
             Some(inner) => {
                 inner.cast_into::<PyDict>().map_err(|_| BodyError::new_err("<dict>: `body` must be a mapping of measurements"))?
             }
             None => d.clone(),
         };
-        let mut text = String::from("body:\n");
-        for (k, v) in d.iter() {
-            let key: String = k.extract().map_err(|_| BodyError::new_err("<dict>: measurement names must be strings"))?;
-            if key.contains([':', '\n', '#']) {
-                return Err(BodyError::new_err(format!("<dict>: unknown measurement `{key}`")));
+        if let Some(m) = d.get_item("measurements")? {
+            let m = m.cast_into::<PyDict>().map_err(|_| BodyError::new_err("<dict>: `measurements` must be a mapping of measurements"))?;
+            let merged = m.copy()?;
+            if let Some(base) = d.get_item("base")? {
+                merged.set_item("base", base)?;
             }
-            let value = if key == "body_sample" {
-                let s: String = v.extract().map_err(|_| BodyError::new_err("<dict>: body.body_sample: expected a string"))?;
-                format!("'{}'", s.replace('\'', "''"))
-            } else {
-                match v.extract::<f64>() {
-                    Ok(x) => format!("{}", Value::Float(x)),
-                    Err(_) => return Err(BodyError::new_err(format!("<dict>: body.{key}: expected a number, got {}", v.repr()?))),
-                }
-            };
-            text.push_str(&format!("  {key}: {value}\n"));
+            d = merged;
         }
-        let body = garmentcode::Body::from_yaml(&text, "<dict>").map_err(|e| BodyError::new_err(e.to_string()))?;
+        let items: Vec<(String, Bound<'_, PyAny>)> = d
+            .iter()
+            .map(|(k, v)| Ok((k.extract::<String>().map_err(|_| BodyError::new_err("<dict>: measurement names must be strings"))?, v)))
+            .collect::<PyResult<_>>()?;
+        let texts: Vec<Option<String>> = items.iter().map(|(_, v)| v.extract::<String>().ok()).collect();
+        let entries: Vec<(String, &str, garmentcode::BodyValue<'_>)> = items
+            .iter()
+            .zip(&texts)
+            .map(|((name, v), text)| {
+                let value = if let Some(t) = text {
+                    garmentcode::BodyValue::Text(t)
+                } else if v.is_none() {
+                    garmentcode::BodyValue::Null
+                } else if let (false, Ok(x)) = (v.is_instance_of::<pyo3::types::PyBool>(), v.extract::<f64>()) {
+                    garmentcode::BodyValue::Number(x)
+                } else {
+                    garmentcode::BodyValue::Other(format!("a {}", v.get_type().name().map(|n| n.to_string()).unwrap_or_default()))
+                };
+                (String::new(), name.as_str(), value)
+            })
+            .collect();
+        let body = garmentcode::Body::from_entries(&entries, garments::builtin::BODIES)
+            .map_err(|problems| BodyError::new_err(garmentcode::BodyError { file: "<dict>".into(), problems }.to_string()))?;
         Ok(PyBody { body, name: "body".into() })
     }
 
@@ -350,6 +392,32 @@ impl PyDesignSpace {
     }
 }
 
+/// The slot value of a number `x` of a `[lo, hi]` parameter: `(x - lo) / (hi - lo)`.
+fn encode_number(x: f64, lo: f64, hi: f64) -> f64 {
+    if hi > lo { (x - lo) / (hi - lo) } else { 0.0 }
+}
+
+/// The number of a slot value `t` (clamped to [0, 1]) of a `[lo, hi]`
+/// parameter: `lo + t (hi - lo)` rounded to the parameter's precision, the
+/// shortest decimal number (1 to 17 significant digits) in the range that
+/// [`encode_number`] turns into `t` again, or failing that the closest float
+/// that does (a few units in the last place away). So `decode(encode(d))` gives
+/// back `d`'s values (0.1 stays 0.1, not 0.09999999999999998), whenever the
+/// encoding tells the value from its neighbours. Without any such number (a
+/// vector not made by `encode`), `lo + t (hi - lo)` itself.
+fn decode_number(t: f64, lo: f64, hi: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    let y = (lo + t * (hi - lo)).clamp(lo, hi);
+    let encodes = |x: &f64| (lo..=hi).contains(x) && encode_number(*x, lo, hi) == t;
+    let shortest = (0..17).map(|digits| format!("{y:.digits$e}").parse::<f64>().unwrap_or(y));
+    let (mut up, mut down) = (y, y);
+    let closest = (0..8).flat_map(|_| {
+        (up, down) = (up.next_up(), down.next_down());
+        [down, up]
+    });
+    shortest.chain(closest).find(encodes).unwrap_or(y)
+}
+
 #[pymethods]
 impl PyDesignSpace {
     /// The built-in design space, or the one of a design file (its ranges and
@@ -417,20 +485,37 @@ impl PyDesignSpace {
 
     /// The design of sample `index` of a dataset with this `seed`, as
     /// `garmentcode sample` draws it (the first design the filters accept) on
-    /// `bodies` (as `sample_dataset`'s; default the neutral body).
-    #[pyo3(signature = (seed, index, bodies = None))]
-    fn sample<'py>(&self, py: Python<'py>, seed: u64, index: u64, bodies: Option<&Bound<'py, PyAny>>) -> PyResult<Bound<'py, PyDict>> {
+    /// `bodies` (as `sample_dataset`'s; default the neutral body). With
+    /// `with_body=True`, `(design, body)`: also the body the sampler drew it
+    /// for, as the sample's `body_measurements.yaml` has it.
+    #[pyo3(signature = (seed, index, bodies = None, *, with_body = false))]
+    fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        seed: u64,
+        index: u64,
+        bodies: Option<&Bound<'py, PyAny>>,
+        with_body: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
         let bodies = bodies_arg(bodies)?;
         let bodies = sample_cmd::load_bodies(bodies.as_deref()).map_err(|e| BodyError::new_err(cli_message(e)))?;
         let sampler = DatasetSampler::new(seed, self.space.clone(), bodies).map_err(|e| DesignError::new_err(e.to_string()))?;
-        match py.detach(|| sampler.draw(index)) {
-            Outcome::Accepted(s) => design_dict(py, &s.design, &self.space),
-            Outcome::Exhausted { .. } => Err(DatasetError::new_err(format!(
-                "{}: every one of {} designs was rejected",
-                garments::sample::sample_name(index),
-                garments::sample::MAX_ATTEMPTS
-            ))),
+        let s = match py.detach(|| sampler.draw(index)) {
+            Outcome::Accepted(s) => s,
+            Outcome::Exhausted { .. } => {
+                return Err(DatasetError::new_err(format!(
+                    "{}: every one of {} designs was rejected",
+                    garments::sample::sample_name(index),
+                    garments::sample::MAX_ATTEMPTS
+                )));
+            }
+        };
+        let design = design_dict(py, &s.design, &self.space)?;
+        if !with_body {
+            return Ok(design.into_any());
         }
+        let body = PyBody { body: sampler.body_for(s.body, &s.design), name: sampler.bodies()[s.body].name.clone() };
+        (design, body).into_bound_py_any(py)
     }
 
     /// The JSON Schema of a design file's values.
@@ -480,10 +565,7 @@ impl PyDesignSpace {
             .slots()
             .into_iter()
             .map(|(i, s)| match s {
-                Slot::Number { lo, hi, .. } => {
-                    let x = values[i].as_f64().unwrap_or(lo);
-                    if hi > lo { (x - lo) / (hi - lo) } else { 0.0 }
-                }
+                Slot::Number { lo, hi, .. } => encode_number(values[i].as_f64().unwrap_or(lo), lo, hi),
                 Slot::Flag => f64::from(u8::from(values[i] == Value::Bool(true))),
                 Slot::Option(o) => f64::from(u8::from(o.loosely_eq(&values[i]))),
             })
@@ -492,8 +574,9 @@ impl PyDesignSpace {
     }
 
     /// The design of a vector (`encode`'s inverse; any vector of the right length
-    /// decodes: numbers are clamped to their range and integers rounded, flags
-    /// are true from 0.5, choices take the largest slot).
+    /// decodes: numbers are clamped to their range and rounded to the parameter's
+    /// precision (see [`decode_number`]), integers rounded, flags are true from
+    /// 0.5, choices take the largest slot).
     fn decode<'py>(&self, py: Python<'py>, vector: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
         let v: Vec<f64> = py.import("numpy")?.call_method1("asarray", (vector, "float64"))?.call_method0("tolist")?.extract()?;
         let slots = self.slots();
@@ -509,10 +592,8 @@ impl PyDesignSpace {
         let mut best: Vec<f64> = vec![f64::NEG_INFINITY; params.len()];
         for ((i, s), x) in slots.into_iter().zip(v) {
             match s {
-                Slot::Number { lo, hi, int } => {
-                    let y = (lo + x.clamp(0.0, 1.0) * (hi - lo)).clamp(lo, hi);
-                    values[i] = if int { Value::Int(y.round() as i64) } else { Value::Float(y) };
-                }
+                Slot::Number { lo, hi, int: true } => values[i] = Value::Int(decode_number(x, lo, hi).round() as i64),
+                Slot::Number { lo, hi, int: false } => values[i] = Value::Float(decode_number(x, lo, hi)),
                 Slot::Flag => values[i] = Value::Bool(x >= 0.5),
                 Slot::Option(o) => {
                     if x > best[i] {
@@ -601,9 +682,11 @@ fn layout(s: &str) -> PyResult<garmentcode::draw::Layout> {
 #[pymethods]
 impl PyPattern {
     /// Read a specification: JSON text, or the path of a `specification.json`
-    /// (any the reference writes).
+    /// (any the reference writes). `name` names the pattern (default: from the
+    /// file's name; none for text).
     #[staticmethod]
-    fn from_json(source: &Bound<'_, PyAny>) -> PyResult<PyPattern> {
+    #[pyo3(signature = (source, name = None))]
+    fn from_json(source: &Bound<'_, PyAny>, name: Option<String>) -> PyResult<PyPattern> {
         let s = path_or_str(source)?;
         let pattern = if s.trim_start().starts_with('{') {
             garmentcode::Pattern::from_json(&s).map_err(|e| PatternError::new_err(format!("<text>: {e}")))?
@@ -612,6 +695,10 @@ impl PyPattern {
             p.name = spec_name(&s);
             p
         };
+        let mut pattern = pattern;
+        if let Some(name) = name {
+            pattern.name = name;
+        }
         Ok(PyPattern { pattern, origin: None })
     }
 
@@ -917,6 +1004,19 @@ fn build(py: Python<'_>, design: &Bound<'_, PyAny>, body: Option<&Bound<'_, PyAn
     Ok(PyPattern { pattern: built.pattern, origin: Some(Origin { design, body, checks: built.checks }) })
 }
 
+/// A design dict (nested as design files, or partly flat) as flat
+/// `{path: value}`, in its own order and unchecked: for reading the designs of
+/// samples, whose design space may be a file's (`iter_shards`).
+#[pyfunction]
+#[pyo3(name = "_flat_design")]
+fn flat_design<'py>(py: Python<'py>, design: &Bound<'py, PyDict>) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    for (path, v) in design_pairs(design)? {
+        d.set_item(path, value_to_py(py, &v)?)?;
+    }
+    Ok(d)
+}
+
 /// Names of the built-in designs.
 #[pyfunction]
 fn builtin_designs() -> Vec<&'static str> {
@@ -930,11 +1030,12 @@ fn builtin_designs() -> Vec<&'static str> {
 /// `png`, `mesh`), `layout` (`"folders"`, `"shards"` or `"shards:N"`), `design_space` (a
 /// design file or a `DesignSpace` read from one), `shard` (`(i, k)`: only the
 /// samples `i % k == i`). `progress(done, total)` is called a few times a second
-/// from the calling thread. Builds run without the GIL. Returns the summary's
-/// path. Raises `InputError` for bad arguments and `DatasetError` when samples
+/// from the calling thread. `quiet` (the default) keeps the CLI's messages
+/// (resuming, the closing summary line) off stderr; `quiet=False` prints them.
+/// Builds run without the GIL. Returns the summary's path. Raises `InputError` for bad arguments and `DatasetError` when samples
 /// fail or the run is interrupted (Ctrl-C, or an exception from `progress`).
 #[pyfunction]
-#[pyo3(signature = (n, seed, out, *, jobs = None, bodies = None, formats = None, layout = None, design_space = None, shard = None, progress = None))]
+#[pyo3(signature = (n, seed, out, *, jobs = None, bodies = None, formats = None, layout = None, design_space = None, shard = None, progress = None, quiet = true))]
 fn sample_dataset(
     py: Python<'_>,
     n: u64,
@@ -947,6 +1048,7 @@ fn sample_dataset(
     design_space: Option<&Bound<'_, PyAny>>,
     shard: Option<(u64, u64)>,
     progress: Option<Py<PyAny>>,
+    quiet: bool,
 ) -> PyResult<String> {
     if n == 0 {
         return Err(InputError::new_err("sample_dataset: n must be at least 1"));
@@ -998,7 +1100,7 @@ fn sample_dataset(
                 })
             })
         };
-        sample_cmd::run_reporting(args, Some(&mut report))
+        sample_cmd::run_reporting(args, Some(&mut report), quiet)
     });
     if let Some(e) = callback_error {
         return Err(e);
@@ -1072,6 +1174,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sample_dataset, m)?)?;
     m.add_function(wrap_pyfunction!(compare_specs, m)?)?;
     m.add_function(wrap_pyfunction!(parse_yaml, m)?)?;
+    m.add_function(wrap_pyfunction!(flat_design, m)?)?;
+    // The suffixes of the mesh files after a pattern's name (`_boxmesh.obj`, ...).
+    m.add("_MESH_FILE_SUFFIXES", garmentcode::mesh::write::FILE_SUFFIXES.to_vec())?;
     m.add("DesignError", py.get_type::<DesignError>())?;
     m.add("BodyError", py.get_type::<BodyError>())?;
     m.add("BuildError", py.get_type::<BuildError>())?;

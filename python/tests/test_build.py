@@ -2,6 +2,8 @@
 
 import json
 import subprocess
+import sys
+import textwrap
 
 import numpy as np
 import pytest
@@ -142,3 +144,56 @@ def test_bad_pattern_files_raise_pattern_error(tmp_path):
         gc.Pattern.from_json(tmp_path / "missing.json")
     with pytest.raises(ValueError, match="unknown format 'obj'"):
         gc.build("t-shirt").write(tmp_path / "x", formats=["obj"])
+
+
+def test_deep_and_self_containing_design_dicts_raise_design_error():
+    # In a child interpreter: before the fix both crashed it (SIGSEGV).
+    code = textwrap.dedent(
+        """
+        import time
+        import garmentcode as gc
+
+        deep = {"v": 1.0}
+        for _ in range(20000):
+            deep = {"a": deep}
+        looped = {}
+        looped["shirt"] = looped
+        for design, message in ((deep, "nested more than 32 dicts deep"), (looped, "design.shirt: the dict contains itself")):
+            start = time.monotonic()
+            try:
+                gc.build(design)
+            except gc.DesignError as e:
+                assert message in str(e), str(e)
+            else:
+                raise AssertionError("no DesignError")
+            assert time.monotonic() - start < 2, time.monotonic() - start
+        print("ok")
+        """
+    )
+    child = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert child.returncode == 0 and child.stdout.strip() == "ok", (child.returncode, child.stderr[-2000:])
+
+
+def test_a_body_may_give_a_few_measurements_over_a_built_in_body(tmp_path):
+    female = gc.Body("mean_female")
+    for source in (
+        {"base": "mean_female", "waist": 70.0, "hips": 101.5},
+        {"body": {"base": "mean_female", "waist": 70.0, "hips": 101.5}},
+        {"base": "mean_female", "measurements": {"waist": 70.0, "hips": 101.5}},
+        "body:\n  base: mean_female\n  waist: 70.0\n  hips: 101.5\n",
+    ):
+        body = gc.Body.from_yaml(source) if isinstance(source, str) else gc.Body(source)
+        m = body.measurements
+        assert (m["waist"], m["hips"]) == (70.0, 101.5)
+        assert {k: v for k, v in m.items() if k not in ("waist", "hips")} == {k: v for k, v in female.measurements.items() if k not in ("waist", "hips")}
+    path = tmp_path / "me.yaml"
+    path.write_text("body:\n  base: mean_female\n  waist: 70.0\n")
+    assert gc.build("t-shirt", str(path)).body.measurements["waist"] == 70.0
+    with pytest.raises(gc.BodyError, match=r"<dict>: body\.base: no built-in body `mean_femal` \(did you mean `mean_female`\?\)"):
+        gc.Body({"base": "mean_femal", "waist": 70.0})
+    with pytest.raises(gc.BodyError, match=r"body\.waist: 7000 cm is outside the plausible range 40 to 220 cm"):
+        gc.Body({"base": "mean_female", "waist": 7000.0})
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("body:\n  base: mean_female\n  wasit: 70.0\n")
+    with pytest.raises(gc.BodyError, match=r"bad\.yaml: line 3: body\.wasit: unknown measurement \(did you mean `waist`\?\)"):
+        gc.Body(bad)

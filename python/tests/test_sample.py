@@ -1,8 +1,11 @@
 """Datasets from Python equal the CLI's byte for byte; the sampler's designs; the
 shard reader."""
 
+import json
 import subprocess
 import threading
+
+import numpy as np
 
 import pytest
 
@@ -70,7 +73,8 @@ def test_iter_shards_yields_every_sample_as_a_dict(tmp_path):
         folder = tmp_path / "f" / s["__key__"]
         spec = gc.Pattern.from_json(folder / f"{s['__key__']}_specification.json").spec
         assert s["specification.json"] == spec
-        assert s["design_params.yaml"] == gc.parse_yaml((folder / "design_params.yaml").read_text())
+        # The design flat, as everywhere else in the package.
+        assert s["design_params.yaml"] == gc.DesignSpace().validate((folder / "design_params.yaml").read_text())
         assert s["body_measurements.yaml"]["body"]["height"] > 100
     raw = next(gc.iter_shards(tmp_path / "s", decode=False))
     assert isinstance(raw["specification.json"], bytes)
@@ -142,3 +146,37 @@ def test_bad_dataset_arguments_raise_with_the_cli_s_messages(tmp_path):
         gc.sample_dataset(2, 1, tmp_path / "o", layout="zip")
     with pytest.raises(ValueError):
         gc.sample_dataset(0, 1, tmp_path / "o")
+
+
+def test_iter_shards_gives_meshes_as_pattern_mesh_does(tmp_path):
+    gc.sample_dataset(3, 4, tmp_path / "s", layout="shards:2", jobs=1, formats="json,mesh")
+    raw = {s["__key__"]: s for s in gc.iter_shards(tmp_path / "s", decode=False)}
+    for s in gc.iter_shards(tmp_path / "s"):
+        key = s["__key__"]
+        mesh = s["mesh"]
+        assert isinstance(mesh, gc.Mesh)
+        assert not any(k.endswith((".obj", ".ply", ".pickle", ".mtl")) for k in s), sorted(s)
+        expected = gc.Pattern.from_json(json.dumps(s["specification.json"])).mesh()
+        for name in ("vertices", "faces", "uvs", "face_uvs", "face_panels", "vertex_panels"):
+            assert np.array_equal(getattr(mesh, name), getattr(expected, name)), name
+        assert mesh.vertex_labels == expected.vertex_labels and mesh.panel_names == expected.panel_names
+        # The arrays are those of the shard's mesh files.
+        files = {name.removeprefix(key + "_"): data for name, data in mesh.files().items()}
+        assert files == {k: v for k, v in raw[key].items() if not k.startswith("__") and k in files}
+        assert len(files) == 8
+
+
+def test_shard_dataset_has_a_length_and_a_repr(tmp_path):
+    gc.sample_dataset(7, 2, tmp_path / "s", layout="shards:3", jobs=1)
+    ds = gc.ShardDataset(tmp_path / "s")
+    assert len(ds) == 7 == len(list(ds))
+    assert repr(ds) == f"ShardDataset(3 shards in {str(tmp_path / 's')!r}, decode=True)"
+    assert len(gc.ShardDataset([tmp_path / "s" / "shard-000002.tar"])) == 1
+
+
+def test_sample_dataset_is_quiet_unless_asked(tmp_path, capfd):
+    gc.sample_dataset(2, 1, tmp_path / "a", jobs=1)
+    assert capfd.readouterr().err == ""
+    gc.sample_dataset(2, 1, tmp_path / "a", jobs=1, quiet=False)
+    err = capfd.readouterr().err
+    assert "resuming: 2 of 2 samples already made" in err and "2 samples (0 made" in err, err

@@ -155,7 +155,7 @@ pub fn load_body(arg: &str) -> Result<(garmentcode::Body, String), CliError> {
     match source(arg, &known, "body")? {
         Source::Builtin(name) => Ok((garments::builtin::body(name).expect("a built-in body"), name.to_string())),
         Source::File(text) => {
-            let b = garmentcode::Body::from_yaml(&text, arg).map_err(|e| CliError::Input(e.to_string()))?;
+            let b = garments::builtin::body_from_yaml(&text, arg).map_err(|e| CliError::Input(e.to_string()))?;
             Ok((b, arg.to_string()))
         }
     }

@@ -15,13 +15,13 @@
 //! not fit) is a 200 answer with `"ok": false` and the library's reason, because
 //! the request itself was fine. Validation is the params module's
 //! ([`ParamSpec::check`], [`read_design_values`]) and the body module's
-//! ([`Body::from_yaml`], [`Body::check_measurement`]), never a copy of it.
+//! ([`Body::from_entries`], [`Body::check_measurement`]), never a copy of it.
 
 use std::cell::RefCell;
 use std::sync::OnceLock;
 
 use garmentcode::io::{DesignError, from_values, read_design_values, write_design};
-use garmentcode::{Arena, Body, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue};
+use garmentcode::{Arena, Body, BodyValue, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue};
 use garments::Design;
 use garments::sample::{DatasetSampler, NamedBody, Outcome};
 use serde_json::{Map, Value as Json, json};
@@ -349,7 +349,7 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
                 if map.contains_key("measurements") || map.contains_key("base") {
                     return Err(ApiError::bad("body: give either yaml or base and measurements, not both"));
                 }
-                let b = Body::from_yaml(text, "body")
+                let b = garments::builtin::body_from_yaml(text, "body")
                     .map_err(|e| ApiError::from_problems(e.problems.iter().map(|p| format!("body: {p}")).collect()))?;
                 return Ok((label, b));
             }
@@ -358,45 +358,34 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
                 Some(Json::String(s)) => s.as_str(),
                 Some(_) => return Err(ApiError::bad("body.base must be the name of a built-in body")),
             };
-            let mut b = builtin_body(base).map_err(|e| ApiError { status: 400, ..e })?;
-            let mut problems = Vec::new();
+            let mut entries = vec![(String::new(), "base", BodyValue::Text(base))];
             match map.get("measurements") {
                 None | Some(Json::Null) => {}
-                Some(Json::Object(m)) => {
-                    for (name, jv) in m {
-                        if name.starts_with('_') || name == "body_sample" {
-                            continue; // derived values are recomputed, as in body files
-                        }
-                        if name == "vert_bust_line" && jv.is_null() {
-                            b.vert_bust_line = None;
-                            continue;
-                        }
-                        let Some(x) = jv.as_f64() else {
-                            problems.push(format!("body.{name}: expected a number, got a JSON {}", json_type(jv)));
-                            continue;
-                        };
-                        match Body::check_measurement(name, x) {
-                            Ok(()) => {
-                                b.set(name, x);
-                            }
-                            Err(e) => problems.push(format!("body.{name}: {e}")),
-                        }
-                    }
-                }
-                Some(other) => problems
-                    .push(format!("body.measurements must be an object of measurement names and numbers, not a JSON {}", json_type(other))),
-            }
-            if problems.is_empty() {
-                if let Err(p) = b.check_derived() {
-                    problems.extend(p.into_iter().map(|p| format!("body: {p}")));
+                Some(Json::Object(m)) => entries.extend(m.iter().map(|(name, jv)| {
+                    let value = match jv {
+                        Json::Number(_) => BodyValue::Number(jv.as_f64().unwrap_or(f64::NAN)),
+                        Json::String(s) => BodyValue::Text(s),
+                        Json::Null => BodyValue::Null,
+                        other => BodyValue::Other(format!("a JSON {}", json_type(other))),
+                    };
+                    (String::new(), name.as_str(), value)
+                })),
+                Some(other) => {
+                    return Err(ApiError::bad(format!(
+                        "body.measurements must be an object of measurement names and numbers, not a JSON {}",
+                        json_type(other)
+                    )));
                 }
             }
-            if problems.is_empty() {
-                let label = if map.contains_key("measurements") { label } else { base.to_string() };
-                Ok((label, b))
-            } else {
-                Err(ApiError::from_problems(problems))
-            }
+            // Problems name their measurement (`body.waist: ...`); the others
+            // (derived values that make no sense) are about the whole body.
+            let b = Body::from_entries(&entries, garments::builtin::BODIES).map_err(|problems| {
+                ApiError::from_problems(
+                    problems.into_iter().map(|p| if p.starts_with("body.") { p } else { format!("body: {p}") }).collect(),
+                )
+            })?;
+            let label = if map.contains_key("measurements") { label } else { base.to_string() };
+            Ok((label, b))
         }
         Some(other) => Err(ApiError::bad(format!("\"body\" must be a built-in body name or an object, not a JSON {}", json_type(other)))),
     }

@@ -186,7 +186,7 @@ pub fn load_bodies(arg: Option<&str>) -> Result<Vec<NamedBody>, CliError> {
             Some(b) => (b, item.strip_suffix(".yaml").unwrap_or(&item).to_string()),
             None if Path::new(&item).is_file() => {
                 let text = super::read_text(&item).map_err(|e| CliError::Input(format!("{item}: cannot read: {e}")))?;
-                let b = garmentcode::Body::from_yaml(&text, &item).map_err(|e| CliError::Input(e.to_string()))?;
+                let b = garments::builtin::body_from_yaml(&text, &item).map_err(|e| CliError::Input(e.to_string()))?;
                 let stem = Path::new(&item).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| item.clone());
                 (b, stem)
             }
@@ -224,12 +224,20 @@ pub type Report<'a> = &'a mut dyn FnMut(u64, u64) -> Result<(), String>;
 
 /// `garmentcode sample`, with progress drawn on stderr.
 pub fn run(args: SampleArgs) -> Result<i32, CliError> {
-    run_reporting(args, None)
+    run_reporting(args, None, false)
 }
 
 /// `garmentcode sample`, with progress given to `report` (instead of drawn on
-/// stderr) when there is one: the Python package's `sample_dataset`.
-pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32, CliError> {
+/// stderr) when there is one, and without its messages on stderr when `quiet`:
+/// the Python package's `sample_dataset`.
+pub fn run_reporting(args: SampleArgs, mut report: Option<Report>, quiet: bool) -> Result<i32, CliError> {
+    // What the run did (resumed, removed temporaries, the closing summary line), on
+    // stderr unless `quiet`.
+    let note = |m: std::fmt::Arguments| {
+        if !quiet {
+            eprintln!("{m}");
+        }
+    };
     if !args.unpack.is_empty() {
         return unpack(&args.unpack, &args.out);
     }
@@ -265,14 +273,14 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
                 store::scan(&opts.out, &settings, n, wanted, |r| tally.add(&r)).map_err(CliError::Input)?
             };
             if existing.removed_temps > 0 {
-                eprintln!("removed {} unfinished sample folder(s) of an interrupted run", existing.removed_temps);
+                note(format_args!("removed {} unfinished sample folder(s) of an interrupted run", existing.removed_temps));
             }
             let finished = existing.finished;
             // Indices of this shard: shard_i, shard_i + K, ... below n.
             let slots = if shard_i < n { (n - shard_i).div_ceil(shard_k) } else { 0 };
             let todo = slots - finished.len() as u64;
             if !finished.is_empty() {
-                eprintln!("resuming: {} of {slots} samples already made", finished.len());
+                note(format_args!("resuming: {} of {slots} samples already made", finished.len()));
             }
             let jobs = opts.jobs.min(todo.max(1) as usize);
             let index_of = |slot: u64| Some(shard_i + slot * shard_k).filter(|i| finished.binary_search(i).is_err());
@@ -308,7 +316,7 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
                 }
             };
             if existing.removed_temps > 0 {
-                eprintln!("removed {} unfinished shard(s) of an interrupted run", existing.removed_temps);
+                note(format_args!("removed {} unfinished shard(s) of an interrupted run", existing.removed_temps));
             }
             // Samples absent from a finished shard had every design rejected; their
             // records are drawn again (and a shard missing an accepted sample is not ours).
@@ -328,7 +336,7 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
             let todo_shards: Vec<u64> = (0..count).filter(|&k| wanted_shard(k) && existing.done.binary_search(&k).is_err()).collect();
             let todo: u64 = todo_shards.iter().map(|&k| shards::range(k, size, n).count() as u64).sum();
             if !existing.done.is_empty() {
-                eprintln!("resuming: {} of {} shards already made", existing.done.len(), existing.done.len() + todo_shards.len());
+                note(format_args!("resuming: {} of {} shards already made", existing.done.len(), existing.done.len() + todo_shards.len()));
             }
             let jobs = opts.jobs.min(todo.max(1) as usize);
             let slots = todo_shards.len() as u64 * size;
@@ -382,12 +390,12 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>) -> Result<i32
 
     let failed = tally.failed();
     let rate = if seconds > 0.0 { made as f64 / seconds } else { 0.0 };
-    eprintln!(
+    note(format_args!(
         "{}: {} samples ({made} made in {seconds:.2} s, {rate:.0}/s; {resumed} already there); {} designs rejected and drawn again; {summary_at}",
         opts.out.display(),
         tally.samples(),
         tally.rejected(),
-    );
+    ));
     if !failed.is_empty() {
         let shown: Vec<&str> = failed.iter().take(10).map(String::as_str).collect();
         return Err(CliError::Failed(format!(

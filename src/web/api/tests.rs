@@ -183,6 +183,16 @@ fn bodies_by_name_file_or_measurements() {
     let (status, b) = post("/api/body", json!({ "body": { "base": "mean_all", "measurements": { "waist": 70.0, "_waist_level": 1.0 } } }));
     assert_eq!(status, 200);
     assert_eq!(b["measurements"]["waist"], 70.0);
+    // A body file may do the same (`base` in its `body:` mapping).
+    let (status, b) = post("/api/body", json!({ "body": { "yaml": "body:\n  base: mean_female\n  waist: 71.0\n" } }));
+    assert_eq!(status, 200, "{b}");
+    assert_eq!(b["measurements"]["waist"], 71.0);
+    let female = garments::builtin::body("mean_female").unwrap();
+    assert_eq!(b["measurements"]["height"], female.height);
+    // An unknown base is named, with a suggestion.
+    let (status, r) = post("/api/body", json!({ "body": { "base": "mean_femal", "measurements": { "waist": 70.0 } } }));
+    assert_eq!(status, 400);
+    assert!(r["error"].as_str().unwrap().contains("body.base: no built-in body `mean_femal` (did you mean `mean_female`?)"), "{r}");
     // A body file.
     let file = garments::builtin::BODIES[1].1;
     let (status, b) = post("/api/body", json!({ "body": { "yaml": file } }));
