@@ -411,14 +411,19 @@ impl Body {
             return Err(format!("unknown measurement{}", did_you_mean(name)));
         };
         if !x.is_finite() {
-            return Err(format!("expected a finite number, got {x}"));
+            return Err(format!("expected a finite number, got {}", crate::shown::number(x)));
         }
         if (m.min..=m.max).contains(&x) {
             return Ok(());
         }
         let unit = m.unit;
-        let mut e =
-            format!("{x} {unit} is outside the plausible range {} to {} {unit} ({})", m.min, m.max, m.description.trim_end_matches('.'));
+        let mut e = format!(
+            "{} {unit} is outside the plausible range {} to {} {unit} ({})",
+            crate::shown::number(x),
+            m.min,
+            m.max,
+            m.description.trim_end_matches('.')
+        );
         let conversions: &[(f64, &str)] = if unit == "cm" {
             &[(100.0, "metres"), (0.1, "millimetres"), (2.54, "inches")]
         } else {

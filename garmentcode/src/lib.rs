@@ -67,6 +67,7 @@ pub mod math;
 #[cfg(feature = "mesh")]
 pub mod mesh;
 pub mod ops;
+pub mod shown;
 pub mod slots;
 
 // Input/output and drawings, apart from geometry.

@@ -21,7 +21,7 @@ use std::cell::RefCell;
 use std::sync::OnceLock;
 
 use garmentcode::io::{DesignError, from_values, read_design_values, write_design};
-use garmentcode::{Arena, Body, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue};
+use garmentcode::{Arena, Body, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue, shown};
 use garments::Design;
 use garments::sample::{DatasetSampler, NamedBody, Outcome};
 use serde_json::{Map, Value as Json, json};
@@ -94,7 +94,7 @@ fn builtin_bodies() -> &'static [(&'static str, Body)] {
 fn builtin_body(name: &str) -> ApiResult<Body> {
     builtin_bodies().iter().find(|(n, _)| *n == name).map(|(_, b)| b.clone()).ok_or_else(|| {
         let known: Vec<&str> = builtin_bodies().iter().map(|(n, _)| *n).collect();
-        ApiError::new(404, format!("no built-in body '{name}' (built-in: {})", known.join(", ")))
+        ApiError::new(404, format!("no built-in body '{}' (built-in: {})", shown::text(name), known.join(", ")))
     })
 }
 
@@ -113,7 +113,10 @@ pub fn route(req: &Request) -> Response {
                 .map(|s| s.to_string())
                 .or_else(|| panic.downcast_ref::<String>().cloned())
                 .unwrap_or_else(|| "unknown panic".into());
-            error_response(&ApiError::new(500, format!("internal error while answering {} {}: {what}", req.method, req.path)))
+            error_response(&ApiError::new(
+                500,
+                format!("internal error while answering {} {}: {what}", shown::text(&req.method), shown::text(&req.path)),
+            ))
         }
     }
 }
@@ -123,7 +126,10 @@ fn route_inner(req: &Request) -> Response {
     let get = req.method == "GET" || req.method == "HEAD";
     let post = req.method == "POST";
     let allow = |methods: &'static str| {
-        let mut r = error_response(&ApiError::new(405, format!("{} is not allowed on {path} (allowed: {methods})", req.method)));
+        let mut r = error_response(&ApiError::new(
+            405,
+            format!("{} is not allowed on {} (allowed: {methods})", shown::text(&req.method), shown::text(path)),
+        ));
         r.headers.push(("Allow", methods.to_string()));
         r
     };
@@ -136,7 +142,10 @@ fn route_inner(req: &Request) -> Response {
         };
     }
     let Some(api) = path.strip_prefix("/api") else {
-        return error_response(&ApiError::new(404, format!("no such page: {path} (the configurator is at /, the API at /api)")));
+        return error_response(&ApiError::new(
+            404,
+            format!("no such page: {} (the configurator is at /, the API at /api)", shown::text(path)),
+        ));
     };
     match api {
         "" | "/" => return if get { json_response(200, &index()) } else { allow("GET, HEAD") },
@@ -152,7 +161,7 @@ fn route_inner(req: &Request) -> Response {
     }
     const POSTS: [&str; 7] = ["/pattern", "/mesh", "/design", "/body", "/random", "/files", "/zip"];
     if !POSTS.contains(&api) {
-        return error_response(&ApiError::new(404, format!("no such API endpoint: {path} (see GET /api)")));
+        return error_response(&ApiError::new(404, format!("no such API endpoint: {} (see GET /api)", shown::text(path))));
     }
     if !post {
         return allow("POST");
@@ -186,7 +195,10 @@ fn parse_json(req: &Request) -> ApiResult<Json> {
     if mime.as_deref() != Some("application/json") {
         return Err(ApiError::new(
             415,
-            format!("the body must be JSON sent with Content-Type: application/json (got {})", mime.as_deref().unwrap_or("none")),
+            format!(
+                "the body must be JSON sent with Content-Type: application/json (got {})",
+                mime.as_deref().map_or("none".into(), shown::text)
+            ),
         ));
     }
     if req.body.iter().all(u8::is_ascii_whitespace) {
@@ -274,7 +286,7 @@ pub fn design_values(v: Option<&Json>) -> ApiResult<Vec<(String, PValue)>> {
             let mut problems = Vec::new();
             for (path, jv) in map {
                 let Some(i) = space.params().iter().position(|p| p.path == *path) else {
-                    problems.push(format!("design.{path}: unknown parameter{}", hint(path)));
+                    problems.push(format!("design.{}: unknown parameter{}", shown::text(path), hint(path)));
                     continue;
                 };
                 let spec: &ParamSpec = &space.params()[i];
@@ -303,8 +315,13 @@ fn design_error(e: DesignError) -> ApiError {
 /// A close parameter path for a typo, as design files get.
 fn hint(path: &str) -> String {
     let last = path.rsplit('.').next().unwrap_or(path);
-    let close: Vec<&str> =
-        space().params().iter().map(|p| p.path.as_str()).filter(|p| p.ends_with(&format!(".{last}")) || *p == last).take(3).collect();
+    let close: Vec<&str> = space()
+        .params()
+        .iter()
+        .map(|p| p.path.as_str())
+        .filter(|p| *p == last || p.strip_suffix(last).is_some_and(|head| head.ends_with('.')))
+        .take(3)
+        .collect();
     if close.is_empty() { String::new() } else { format!(" (did you mean {}?)", close.join(", ")) }
 }
 
@@ -316,6 +333,20 @@ fn json_type(v: &Json) -> &'static str {
         Json::String(_) => "string",
         Json::Array(_) => "array",
         Json::Object(_) => "object",
+    }
+}
+
+/// A JSON value as an error message shows it: a string quoted and shortened
+/// ([`shown::quoted`]), a number in a short form, an array or object by its type.
+fn json_shown(v: &Json) -> String {
+    match v {
+        Json::String(s) => shown::quoted(s),
+        Json::Number(n) => match n.as_f64() {
+            Some(x) if n.is_f64() => shown::number(x),
+            _ => n.to_string(), // an integer: at most 20 digits
+        },
+        Json::Array(_) | Json::Object(_) => format!("a JSON {}", json_type(v)),
+        Json::Null | Json::Bool(_) => v.to_string(),
     }
 }
 
@@ -340,10 +371,13 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
         Some(Json::Object(map)) => {
             for k in map.keys() {
                 if !["yaml", "base", "name", "measurements"].contains(&k.as_str()) {
-                    return Err(ApiError::bad(format!("body: unknown key \"{k}\" (expected yaml, or base and measurements)")));
+                    return Err(ApiError::bad(format!(
+                        "body: unknown key {} (expected yaml, name, or base and measurements)",
+                        shown::quoted(k)
+                    )));
                 }
             }
-            let label = map.get("name").and_then(Json::as_str).unwrap_or("custom").to_string();
+            let label = checked_name("body.name", map.get("name"), "custom")?;
             if let Some(y) = map.get("yaml") {
                 let Some(text) = y.as_str() else { return Err(ApiError::bad("body.yaml must be the text of a body file")) };
                 if map.contains_key("measurements") || map.contains_key("base") {
@@ -372,14 +406,14 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
                             continue;
                         }
                         let Some(x) = jv.as_f64() else {
-                            problems.push(format!("body.{name}: expected a number, got a JSON {}", json_type(jv)));
+                            problems.push(format!("body.{}: expected a number, got a JSON {}", shown::text(name), json_type(jv)));
                             continue;
                         };
                         match Body::check_measurement(name, x) {
                             Ok(()) => {
                                 b.set(name, x);
                             }
-                            Err(e) => problems.push(format!("body.{name}: {e}")),
+                            Err(e) => problems.push(format!("body.{}: {e}", shown::text(name))),
                         }
                     }
                 }
@@ -415,8 +449,15 @@ pub fn body_json(name: &str, b: &Body) -> Json {
 
 /// The pattern name of a request: letters, digits, `-`, `_`, `.` (it names files).
 fn pattern_name(input: &Json) -> ApiResult<String> {
-    match input.get("name") {
-        None | Some(Json::Null) => Ok("garment".into()),
+    checked_name("name", input.get("name"), "garment")
+}
+
+/// A name a request gives (the pattern's, `name`; the body's, `body.name`): 1 to
+/// [`MAX_NAME`] letters, digits, `-`, `_` or `.`, not starting with `.` (it names
+/// files and folders); `default` when absent or null.
+fn checked_name(field: &str, v: Option<&Json>, default: &str) -> ApiResult<String> {
+    match v {
+        None | Some(Json::Null) => Ok(default.into()),
         Some(Json::String(s)) => {
             let ok = !s.is_empty()
                 && s.len() <= MAX_NAME
@@ -425,10 +466,13 @@ fn pattern_name(input: &Json) -> ApiResult<String> {
             if ok {
                 Ok(s.clone())
             } else {
-                Err(ApiError::bad(format!("name: expected 1 to {MAX_NAME} letters, digits, '-', '_' or '.', got {s:?}")))
+                Err(ApiError::bad(format!(
+                    "{field}: expected 1 to {MAX_NAME} letters, digits, '-', '_' or '.' (not first), got {}",
+                    shown::quoted(s)
+                )))
             }
         }
-        Some(other) => Err(ApiError::bad(format!("name must be a string, not a JSON {}", json_type(other)))),
+        Some(other) => Err(ApiError::bad(format!("{field} must be a string, not a JSON {}", json_type(other)))),
     }
 }
 
@@ -526,7 +570,7 @@ fn schema_text() -> &'static str {
 pub fn builtin_design(name: &str) -> ApiResult<Json> {
     let Some((_, text)) = garments::builtin::DESIGNS.iter().find(|(n, _)| *n == name) else {
         let known: Vec<&str> = garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect();
-        return Err(ApiError::new(404, format!("no built-in design '{name}' (built-in: {})", known.join(", "))));
+        return Err(ApiError::new(404, format!("no built-in design '{}' (built-in: {})", shown::text(name), known.join(", "))));
     };
     let values = read_design_values(text, name, space()).map_err(design_error)?;
     Ok(json!({ "name": name, "design": values_json(&values) }))
@@ -574,7 +618,7 @@ fn check_keys(input: &Json, allowed: &[&str]) -> ApiResult<()> {
     for k in input.as_object().map(|m| m.keys().collect::<Vec<_>>()).unwrap_or_default() {
         if !allowed.contains(&k.as_str()) {
             let (last, first) = allowed.split_last().unwrap_or((&"", &[]));
-            return Err(ApiError::bad(format!("unknown key \"{k}\" (expected {} and {last})", first.join(", "))));
+            return Err(ApiError::bad(format!("unknown key {} (expected {} and {last})", shown::quoted(k), first.join(", "))));
         }
     }
     Ok(())
@@ -588,7 +632,7 @@ fn evaluate(input: &Json) -> ApiResult<Evaluation> {
     let layout = match input.get("layout") {
         None | Some(Json::Null) => garmentcode::draw::Layout::Placed,
         Some(Json::String(s)) => s.parse().map_err(|e: String| ApiError::bad(format!("layout: {e}")))?,
-        Some(other) => return Err(ApiError::bad(format!("layout must be \"placed\" or \"flat\", got {other}"))),
+        Some(other) => return Err(ApiError::bad(format!("layout must be \"placed\" or \"flat\", got {}", json_shown(other)))),
     };
     let design = typed_design(&values)?;
     let result = build(&design, &body, &name, layout);
@@ -678,7 +722,7 @@ pub fn mesh_text(input: &Json) -> ApiResult<String> {
         Some(v) => v
             .as_f64()
             .filter(|r| (lo..=hi).contains(r))
-            .ok_or_else(|| ApiError::bad(format!("resolution: expected a number of cm from {lo} to {hi}, got {v}")))?,
+            .ok_or_else(|| ApiError::bad(format!("resolution: expected a number of cm from {lo} to {hi}, got {}", json_shown(v))))?,
     };
     let name = pattern_name(input)?;
     let values = design_values(input.get("design"))?;
@@ -759,7 +803,9 @@ fn mesh_json(m: &garmentcode::mesh::BoxMesh) -> String {
 pub fn random(input: &Json) -> ApiResult<Json> {
     let seed = match input.get("seed") {
         None | Some(Json::Null) => 0,
-        Some(v) => v.as_u64().ok_or_else(|| ApiError::bad(format!("seed must be an integer from 0 to {}, got {v}", u64::MAX)))?,
+        Some(v) => {
+            v.as_u64().ok_or_else(|| ApiError::bad(format!("seed must be an integer from 0 to {}, got {}", u64::MAX, json_shown(v))))?
+        }
     };
     let (name, body) = body_from(input.get("body"))?;
     let sampler = DatasetSampler::new(seed, space().clone(), vec![NamedBody { name, body }])

@@ -175,7 +175,7 @@ impl ParamSpec {
 
 fn describe(v: &Value) -> String {
     match v {
-        Value::Str(s) => format!("\"{s}\""),
+        Value::Str(s) => crate::shown::quoted(s),
         other => other.to_string(),
     }
 }
