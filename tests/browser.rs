@@ -650,7 +650,7 @@ fn drawing_box(b: &Browser) -> ([f64; 4], [f64; 4]) {
 /// turns "Start from" to "t-shirt (edited)"; double-clicking the name or Reset
 /// returns to the t-shirt; another built-in design and a random one are starting
 /// points too. And the flat layout fits the whole drawing into the view, however
-/// the placed one was zoomed.
+/// the placed one was zoomed, as does loading another design.
 #[test]
 #[ignore = "needs chromium and chromedriver: GARMENTCODE_BROWSER_TEST=1 cargo test --test browser -- --ignored"]
 fn start_from_and_changed_values_follow_edits() {
@@ -731,6 +731,17 @@ fn start_from_and_changed_values_follow_edits() {
     assert!((centre(panels[0], panels[2]) - centre(host[0], host[2])).abs() < 0.1 * w, "centred: {panels:?} in {host:?}");
     assert!((centre(panels[1], panels[3]) - centre(host[1], host[3])).abs() < 0.1 * h, "centred: {panels:?} in {host:?}");
     b.screenshot(&scratch.join("2-flat.png"));
+
+    // Another design is fitted too, however the last one was zoomed.
+    for _ in 0..4 {
+        b.click(&b.find("#zoom-in"));
+    }
+    let v = b.version();
+    b.click(&b.find("#design-select option[value='sundress']"));
+    b.wait_drawing("the flat sundress", v);
+    let (panels, host) = drawing_box(&b);
+    let inside = panels[0] >= host[0] - 1.0 && panels[1] >= host[1] - 1.0 && panels[2] <= host[2] + 1.0 && panels[3] <= host[3] + 1.0;
+    assert!(inside, "the whole new drawing in view: {panels:?} in {host:?}");
 
     eprintln!("start-from browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
 }

@@ -251,6 +251,7 @@ function originValue(path) {
 function startFrom(label, preset, values) {
   state.origin = { label, preset, values: { ...values } };
   state.values = { ...values };
+  state.view = null; // another garment: fit it
   refreshAll();
   schedule();
 }
