@@ -473,7 +473,7 @@ fn edit_distance(a: &str, b: &str) -> usize {
 
 fn describe(n: &Node) -> String {
     match &n.value {
-        Y::Str(s) => format!("\"{s}\""),
+        Y::Str(s) => crate::shown::quoted(s),
         other => other.type_name().to_string(),
     }
 }

@@ -466,6 +466,7 @@ fn huge_values_get_short_messages() {
     let shown = format!("\"{}...\" ({MB} characters)", "x".repeat(garmentcode::shown::MAX_CHARS));
     let clipped = format!("{}... ({MB} characters)", "x".repeat(garmentcode::shown::MAX_CHARS));
     let keyed = |v: Json| Json::Object(Map::from_iter([(huge.clone(), v)]));
+    let body_file = garments::builtin::body("mean_all").unwrap().to_yaml();
     let cases: Vec<(&str, Json, &str)> = vec![
         ("/api/pattern", json!({ "name": huge }), "name: expected 1 to 64 letters"),
         ("/api/pattern", json!({ "body": { "name": huge } }), "body.name: expected 1 to 64 letters"),
@@ -479,6 +480,12 @@ fn huge_values_get_short_messages() {
         ("/api/pattern", json!({ "body": { "measurements": keyed(json!(70)) } }), "unknown measurement"),
         ("/api/mesh", json!({ "resolution": huge }), "resolution: expected a number"),
         ("/api/random", json!({ "seed": huge }), "seed must be an integer"),
+        (
+            "/api/body",
+            json!({ "body": { "yaml": body_file.replace("\n  waist: ", &format!("\n  waist: {huge}\n  _waist: ")) } }),
+            "body.waist: expected a number",
+        ),
+        ("/api/design", json!({ "design": format!("design:\n  meta:\n    upper:\n      v: {huge}\n") }), "design.meta.upper: "),
     ];
     for (path, body, message) in cases {
         let (status, r) = post(path, body);
