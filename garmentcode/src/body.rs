@@ -411,7 +411,7 @@ impl Body {
             return Err(format!("unknown measurement{}", did_you_mean(name)));
         };
         if !x.is_finite() {
-            return Err(format!("expected a finite number, got {}", crate::shown::number(x)));
+            return Err(format!("expected a finite number, got {}", crate::message::short(x)));
         }
         if (m.min..=m.max).contains(&x) {
             return Ok(());
@@ -419,7 +419,7 @@ impl Body {
         let unit = m.unit;
         let mut e = format!(
             "{} {unit} is outside the plausible range {} to {} {unit} ({})",
-            crate::shown::number(x),
+            crate::message::short(x),
             m.min,
             m.max,
             m.description.trim_end_matches('.')
@@ -473,7 +473,7 @@ fn edit_distance(a: &str, b: &str) -> usize {
 
 fn describe(n: &Node) -> String {
     match &n.value {
-        Y::Str(s) => crate::shown::quoted(s),
+        Y::Str(s) => crate::message::quote(s),
         other => other.type_name().to_string(),
     }
 }

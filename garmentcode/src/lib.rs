@@ -66,8 +66,8 @@ pub mod intersect;
 pub mod math;
 #[cfg(feature = "mesh")]
 pub mod mesh;
+pub mod message;
 pub mod ops;
-pub mod shown;
 pub mod slots;
 
 // Input/output and drawings, apart from geometry.

@@ -17,11 +17,12 @@
 //! ([`ParamSpec::check`], [`read_design_values`]) and the body module's
 //! ([`Body::from_yaml`], [`Body::check_measurement`]), never a copy of it.
 
+use std::borrow::Cow;
 use std::cell::RefCell;
 use std::sync::OnceLock;
 
 use garmentcode::io::{DesignError, from_values, read_design_values, write_design};
-use garmentcode::{Arena, Body, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue, shown};
+use garmentcode::{Arena, Body, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue, message};
 use garments::Design;
 use garments::sample::{DatasetSampler, NamedBody, Outcome};
 use serde_json::{Map, Value as Json, json};
@@ -94,7 +95,7 @@ fn builtin_bodies() -> &'static [(&'static str, Body)] {
 fn builtin_body(name: &str) -> ApiResult<Body> {
     builtin_bodies().iter().find(|(n, _)| *n == name).map(|(_, b)| b.clone()).ok_or_else(|| {
         let known: Vec<&str> = builtin_bodies().iter().map(|(n, _)| *n).collect();
-        ApiError::new(404, format!("no built-in body '{}' (built-in: {})", shown::text(name), known.join(", ")))
+        ApiError::new(404, format!("no built-in body '{}' (built-in: {})", shown(name), known.join(", ")))
     })
 }
 
@@ -115,7 +116,7 @@ pub fn route(req: &Request) -> Response {
                 .unwrap_or_else(|| "unknown panic".into());
             error_response(&ApiError::new(
                 500,
-                format!("internal error while answering {} {}: {what}", shown::text(&req.method), shown::text(&req.path)),
+                format!("internal error while answering {} {}: {what}", shown(&req.method), shown(&req.path)),
             ))
         }
     }
@@ -128,7 +129,7 @@ fn route_inner(req: &Request) -> Response {
     let allow = |methods: &'static str| {
         let mut r = error_response(&ApiError::new(
             405,
-            format!("{} is not allowed on {} (allowed: {methods})", shown::text(&req.method), shown::text(path)),
+            format!("{} is not allowed on {} (allowed: {methods})", shown(&req.method), shown(path)),
         ));
         r.headers.push(("Allow", methods.to_string()));
         r
@@ -144,7 +145,7 @@ fn route_inner(req: &Request) -> Response {
     let Some(api) = path.strip_prefix("/api") else {
         return error_response(&ApiError::new(
             404,
-            format!("no such page: {} (the configurator is at /, the API at /api)", shown::text(path)),
+            format!("no such page: {} (the configurator is at /, the API at /api)", shown(path)),
         ));
     };
     match api {
@@ -161,7 +162,7 @@ fn route_inner(req: &Request) -> Response {
     }
     const POSTS: [&str; 7] = ["/pattern", "/mesh", "/design", "/body", "/random", "/files", "/zip"];
     if !POSTS.contains(&api) {
-        return error_response(&ApiError::new(404, format!("no such API endpoint: {} (see GET /api)", shown::text(path))));
+        return error_response(&ApiError::new(404, format!("no such API endpoint: {} (see GET /api)", shown(path))));
     }
     if !post {
         return allow("POST");
@@ -197,7 +198,7 @@ fn parse_json(req: &Request) -> ApiResult<Json> {
             415,
             format!(
                 "the body must be JSON sent with Content-Type: application/json (got {})",
-                mime.as_deref().map_or("none".into(), shown::text)
+                mime.as_deref().map_or("none".into(), shown)
             ),
         ));
     }
@@ -286,7 +287,7 @@ pub fn design_values(v: Option<&Json>) -> ApiResult<Vec<(String, PValue)>> {
             let mut problems = Vec::new();
             for (path, jv) in map {
                 let Some(i) = space.params().iter().position(|p| p.path == *path) else {
-                    problems.push(format!("design.{}: unknown parameter{}", shown::text(path), hint(path)));
+                    problems.push(format!("design.{}: unknown parameter{}", shown(path), hint(path)));
                     continue;
                 };
                 let spec: &ParamSpec = &space.params()[i];
@@ -336,13 +337,19 @@ fn json_type(v: &Json) -> &'static str {
     }
 }
 
+/// A key, path or name of a request as an error message shows it: as it is when
+/// short, else cut and quoted by [`message::quote`] (the start and the length).
+pub fn shown(text: &str) -> Cow<'_, str> {
+    if text.chars().count() > message::QUOTE_CHARS { Cow::Owned(message::quote(text)) } else { Cow::Borrowed(text) }
+}
+
 /// A JSON value as an error message shows it: a string quoted and shortened
-/// ([`shown::quoted`]), a number in a short form, an array or object by its type.
+/// ([`message::quote`]), a number in a short form, an array or object by its type.
 fn json_shown(v: &Json) -> String {
     match v {
-        Json::String(s) => shown::quoted(s),
+        Json::String(s) => message::quote(s),
         Json::Number(n) => match n.as_f64() {
-            Some(x) if n.is_f64() => shown::number(x),
+            Some(x) if n.is_f64() => message::short(x).to_string(),
             _ => n.to_string(), // an integer: at most 20 digits
         },
         Json::Array(_) | Json::Object(_) => format!("a JSON {}", json_type(v)),
@@ -373,7 +380,7 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
                 if !["yaml", "base", "name", "measurements"].contains(&k.as_str()) {
                     return Err(ApiError::bad(format!(
                         "body: unknown key {} (expected yaml, name, or base and measurements)",
-                        shown::quoted(k)
+                        message::quote(k)
                     )));
                 }
             }
@@ -406,14 +413,14 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
                             continue;
                         }
                         let Some(x) = jv.as_f64() else {
-                            problems.push(format!("body.{}: expected a number, got a JSON {}", shown::text(name), json_type(jv)));
+                            problems.push(format!("body.{}: expected a number, got a JSON {}", shown(name), json_type(jv)));
                             continue;
                         };
                         match Body::check_measurement(name, x) {
                             Ok(()) => {
                                 b.set(name, x);
                             }
-                            Err(e) => problems.push(format!("body.{}: {e}", shown::text(name))),
+                            Err(e) => problems.push(format!("body.{}: {e}", shown(name))),
                         }
                     }
                 }
@@ -468,7 +475,7 @@ fn checked_name(field: &str, v: Option<&Json>, default: &str) -> ApiResult<Strin
             } else {
                 Err(ApiError::bad(format!(
                     "{field}: expected 1 to {MAX_NAME} letters, digits, '-', '_' or '.' (not first), got {}",
-                    shown::quoted(s)
+                    message::quote(s)
                 )))
             }
         }
@@ -570,7 +577,7 @@ fn schema_text() -> &'static str {
 pub fn builtin_design(name: &str) -> ApiResult<Json> {
     let Some((_, text)) = garments::builtin::DESIGNS.iter().find(|(n, _)| *n == name) else {
         let known: Vec<&str> = garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect();
-        return Err(ApiError::new(404, format!("no built-in design '{}' (built-in: {})", shown::text(name), known.join(", "))));
+        return Err(ApiError::new(404, format!("no built-in design '{}' (built-in: {})", shown(name), known.join(", "))));
     };
     let values = read_design_values(text, name, space()).map_err(design_error)?;
     Ok(json!({ "name": name, "design": values_json(&values) }))
@@ -618,7 +625,7 @@ fn check_keys(input: &Json, allowed: &[&str]) -> ApiResult<()> {
     for k in input.as_object().map(|m| m.keys().collect::<Vec<_>>()).unwrap_or_default() {
         if !allowed.contains(&k.as_str()) {
             let (last, first) = allowed.split_last().unwrap_or((&"", &[]));
-            return Err(ApiError::bad(format!("unknown key {} (expected {} and {last})", shown::quoted(k), first.join(", "))));
+            return Err(ApiError::bad(format!("unknown key {} (expected {} and {last})", message::quote(k), first.join(", "))));
         }
     }
     Ok(())

@@ -29,7 +29,6 @@ use std::net::{IpAddr, SocketAddr, TcpListener, ToSocketAddrs};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use garmentcode::shown;
 use http_body_util::{BodyExt, Full, Limited};
 use hyper::body::{Bytes, Incoming};
 use hyper::header::{CONTENT_LENGTH, CONTENT_TYPE, HOST, HeaderValue};
@@ -38,7 +37,7 @@ use hyper_util::rt::{TokioIo, TokioTimer};
 use tokio::io::AsyncWriteExt;
 use tokio::sync::Semaphore;
 
-use super::api::{ApiError, error_response, route};
+use super::api::{ApiError, error_response, route, shown};
 use super::http::{Limits, Request, Response, percent_decode};
 
 /// Bind `host:port` (`port` 0 lets the system choose).
@@ -212,7 +211,7 @@ async fn run(listener: TcpListener, limits: Limits, log: fn(&str), stop: impl st
 /// Answer one request (never fails: every problem is a 4xx/5xx with a message).
 async fn answer(req: hyper::Request<Incoming>, peer: SocketAddr, shared: &Shared) -> hyper::Response<Full<Bytes>> {
     let arrived = Instant::now();
-    let what = format!("{} {}", shown::text(req.method().as_str()), shown::text(req.uri().path()));
+    let what = format!("{} {}", shown(req.method().as_str()), shown(req.uri().path()));
     let response = match read(req, shared).await {
         Err(e) => error_response(&e),
         // Pages, schemas and built-in data are cheap: answered at once.
@@ -236,7 +235,7 @@ async fn read(req: hyper::Request<Incoming>, shared: &Shared) -> Result<Request,
             format!(
                 "this server answers to its own address ({}), not to host {}",
                 shared.served,
-                shown::quoted(header(HOST).unwrap_or(""))
+                garmentcode::message::quote(header(HOST).unwrap_or(""))
             ),
         ));
     }
@@ -248,7 +247,7 @@ async fn read(req: hyper::Request<Incoming>, shared: &Shared) -> Result<Request,
                 415,
                 format!(
                     "a POST body must be JSON sent with Content-Type: application/json (got {})",
-                    mime.as_deref().map_or("none".into(), shown::text)
+                    mime.as_deref().map_or("none".into(), shown)
                 ),
             ));
         }

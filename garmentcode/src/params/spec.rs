@@ -175,7 +175,7 @@ impl ParamSpec {
 
 fn describe(v: &Value) -> String {
     match v {
-        Value::Str(s) => crate::shown::quoted(s),
+        Value::Str(s) => crate::message::quote(s),
         other => other.to_string(),
     }
 }

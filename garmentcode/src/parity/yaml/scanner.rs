@@ -1043,9 +1043,25 @@ impl<'a> Scanner<'a> {
     }
 }
 
-/// A scalar shown in a message: double-quoted, shortened if long (with its length).
+/// A scalar shown in a message: double-quoted, shortened if long.
 pub(crate) fn short_quote(s: &str) -> String {
-    crate::shown::quoted(s)
+    let mut out = String::from("\"");
+    for (i, c) in s.chars().enumerate() {
+        if i >= 40 {
+            out.push_str("...");
+            break;
+        }
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            '\n' => out.push_str("\\n"),
+            '\t' => out.push_str("\\t"),
+            c if (c as u32) < 0x20 => out.push_str(&format!("\\x{:02X}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
 }
 
 /// Checks the characters PyYAML's reader accepts (printable ones, tab and line
