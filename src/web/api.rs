@@ -127,10 +127,8 @@ fn route_inner(req: &Request) -> Response {
     let get = req.method == "GET" || req.method == "HEAD";
     let post = req.method == "POST";
     let allow = |methods: &'static str| {
-        let mut r = error_response(&ApiError::new(
-            405,
-            format!("{} is not allowed on {} (allowed: {methods})", shown(&req.method), shown(path)),
-        ));
+        let mut r =
+            error_response(&ApiError::new(405, format!("{} is not allowed on {} (allowed: {methods})", shown(&req.method), shown(path))));
         r.headers.push(("Allow", methods.to_string()));
         r
     };
@@ -143,10 +141,7 @@ fn route_inner(req: &Request) -> Response {
         };
     }
     let Some(api) = path.strip_prefix("/api") else {
-        return error_response(&ApiError::new(
-            404,
-            format!("no such page: {} (the configurator is at /, the API at /api)", shown(path)),
-        ));
+        return error_response(&ApiError::new(404, format!("no such page: {} (the configurator is at /, the API at /api)", shown(path))));
     };
     match api {
         "" | "/" => return if get { json_response(200, &index()) } else { allow("GET, HEAD") },
