@@ -186,6 +186,24 @@ impl Browser {
         self.cmd("DELETE", "/actions", None);
     }
 
+    /// A Chrome DevTools Protocol command (chromedriver's extension), e.g. to
+    /// emulate a phone's screen.
+    fn cdp(&self, cmd: &str, params: Json) -> Json {
+        self.cmd("POST", "/goog/cdp/execute", Some(json!({ "cmd": cmd, "params": params })))
+    }
+
+    /// Double-click an element with the mouse.
+    fn double_click(&self, element: &str) {
+        self.actions(json!([{
+            "type": "pointer", "id": "mouse", "parameters": { "pointerType": "mouse" },
+            "actions": [
+                { "type": "pointerMove", "duration": 0, "origin": { ELEMENT: element }, "x": 0, "y": 0 },
+                { "type": "pointerDown", "button": 0 }, { "type": "pointerUp", "button": 0 },
+                { "type": "pointerDown", "button": 0 }, { "type": "pointerUp", "button": 0 },
+            ],
+        }]));
+    }
+
     fn js(&self, script: &str) -> Json {
         self.cmd("POST", "/execute/sync", Some(json!({ "script": script, "args": [] })))
     }
@@ -600,4 +618,187 @@ fn the_3d_view_shows_the_box_mesh() {
     assert!(b.js("return document.querySelector('#drawing svg') !== null").as_bool().unwrap());
 
     eprintln!("3D browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
+}
+
+/// What "Start from" shows and which values are marked changed: `[select value,
+/// selected option's text, changed paths, the groups' "N changed" texts]`.
+const CHANGES: &str = "
+    const ds = document.getElementById('design-select');
+    return [ds.value, ds.options[ds.selectedIndex].text,
+            [...document.querySelectorAll('.param.changed')].map(e => e.dataset.path),
+            [...document.querySelectorAll('.changed-count')].map(e => e.textContent).filter(t => t)];";
+
+/// Where the drawing's panels are on screen and where the drawing area is:
+/// `{ panels: [left, top, right, bottom], host: [...] }` in CSS pixels.
+const DRAWING_BOX: &str = "
+    const h = document.getElementById('drawing').getBoundingClientRect();
+    let l = Infinity, t = Infinity, r = -Infinity, b = -Infinity;
+    for (const g of document.querySelectorAll('#drawing svg g.panels > g')) {
+        const x = g.getBoundingClientRect();
+        l = Math.min(l, x.left); t = Math.min(t, x.top); r = Math.max(r, x.right); b = Math.max(b, x.bottom);
+    }
+    return { panels: [l, t, r, b], host: [h.left, h.top, h.right, h.bottom] };";
+
+fn drawing_box(b: &Browser) -> ([f64; 4], [f64; 4]) {
+    let v = b.js(DRAWING_BOX);
+    let four = |k: &str| -> [f64; 4] { std::array::from_fn(|i| v[k][i].as_f64().unwrap_or(f64::NAN)) };
+    (four("panels"), four("host"))
+}
+
+/// "Start from" and the changed-value dots follow the user's edits: a freshly
+/// loaded t-shirt shows nothing changed; an edit marks its value and group and
+/// turns "Start from" to "t-shirt (edited)"; double-clicking the name or Reset
+/// returns to the t-shirt; another built-in design and a random one are starting
+/// points too. And the flat layout fits the whole drawing into the view, however
+/// the placed one was zoomed, as does loading another design.
+#[test]
+#[ignore = "needs chromium and chromedriver: GARMENTCODE_BROWSER_TEST=1 cargo test --test browser -- --ignored"]
+fn start_from_and_changed_values_follow_edits() {
+    let started = Instant::now();
+    let Some(Session { b, url, scratch, _server, .. }) = session("browser-start-from") else { return };
+    b.goto(&url);
+    b.wait_drawing("the first drawing", 0);
+    assert_eq!(b.js(CHANGES), json!(["t-shirt", "t-shirt", [], []]), "a fresh t-shirt: nothing changed");
+
+    // An edit: its dot, its group's count, and "Start from" says edited.
+    let v = b.version();
+    b.click(&b.find("details[data-group='shirt'] > summary"));
+    let slider = b.find(".param[data-path='shirt.length'] input[type=range]");
+    b.keys(&slider, &"\u{E014}".repeat(5)); // ArrowRight
+    b.wait_drawing("the longer shirt", v);
+    assert_eq!(b.js(CHANGES), json!(["", "t-shirt (edited)", ["shirt.length"], ["1 changed"]]));
+    b.screenshot(&scratch.join("1-edited.png"));
+
+    // Double-click the name: the t-shirt's value again, nothing edited.
+    let v = b.version();
+    b.double_click(&b.find(".param[data-path='shirt.length'] label"));
+    b.wait_drawing("the t-shirt again", v);
+    assert_eq!(b.js(CHANGES), json!(["t-shirt", "t-shirt", [], []]));
+
+    // Edit two values, then Reset.
+    let v = b.version();
+    b.keys(&slider, &"\u{E012}".repeat(3)); // ArrowLeft
+    b.click(&b.find_xpath("//div[@data-path='meta.bottom']//option[text()='SkirtCircle']"));
+    b.wait_drawing("the edited design", v);
+    assert_eq!(b.js(CHANGES), json!(["", "t-shirt (edited)", ["meta.bottom", "shirt.length"], ["1 changed", "1 changed"]]));
+    let v = b.version();
+    b.click(&b.find("#reset"));
+    b.wait_drawing("the reset design", v);
+    assert_eq!(b.js(CHANGES), json!(["t-shirt", "t-shirt", [], []]));
+
+    // Another built-in design is a starting point of its own.
+    let v = b.version();
+    b.click(&b.find("#design-select option[value='sundress']"));
+    b.wait_drawing("the sundress", v);
+    assert_eq!(b.js(CHANGES), json!(["sundress", "sundress", [], []]));
+
+    // So is a random design: its values are not "changed".
+    let v = b.version();
+    b.click(&b.find("#random"));
+    b.wait_drawing("a random design", v);
+    assert_eq!(b.js(CHANGES), json!(["", "random (seed 1)", [], []]));
+    let length = b.find(".param[data-path='shirt.length'] input.num");
+    let value = b.js("return Number(document.querySelector(\".param[data-path='shirt.length'] input.num\").value)").as_f64().unwrap();
+    let edited = if value < 3.0 { value + 0.25 } else { value - 0.25 };
+    b.keys(&length, &format!("\u{E009}a\u{E000}{edited}\n")); // Ctrl+A, release, type, Enter
+    b.wait("the edit marked", 20, "return document.querySelectorAll('.param.changed').length === 1");
+    assert_eq!(b.js(CHANGES), json!(["", "random (seed 1) (edited)", ["shirt.length"], ["1 changed"]]));
+    b.click(&b.find("#reset"));
+    b.wait("the random design again", 20, "return document.querySelectorAll('.param.changed').length === 0");
+    assert_eq!(b.js(CHANGES), json!(["", "random (seed 1)", [], []]));
+
+    // The flat layout fits the whole drawing into the view, zoomed as the placed one was.
+    b.click(&b.find("#design-select option[value='t-shirt']"));
+    b.wait(
+        "the t-shirt",
+        20,
+        "return document.getElementById('design-select').value === 't-shirt' && document.getElementById('status').dataset.idle === 'true'",
+    );
+    for _ in 0..4 {
+        b.click(&b.find("#zoom-in"));
+    }
+    let (panels, host) = drawing_box(&b);
+    assert!(panels[2] - panels[0] > host[2] - host[0] || panels[3] - panels[1] > host[3] - host[1], "zoomed in: {panels:?} in {host:?}");
+    let v = b.version();
+    b.click(&b.find("#layout option[value='flat']"));
+    b.wait_drawing("the flat layout", v);
+    let (panels, host) = drawing_box(&b);
+    let inside = panels[0] >= host[0] - 1.0 && panels[1] >= host[1] - 1.0 && panels[2] <= host[2] + 1.0 && panels[3] <= host[3] + 1.0;
+    assert!(inside, "the whole flat drawing in view: {panels:?} in {host:?}");
+    let (w, h) = (host[2] - host[0], host[3] - host[1]);
+    assert!((panels[2] - panels[0]) > 0.6 * w || (panels[3] - panels[1]) > 0.6 * h, "and filling it: {panels:?} in {host:?}");
+    let centre = |a: f64, b: f64| (a + b) / 2.0;
+    assert!((centre(panels[0], panels[2]) - centre(host[0], host[2])).abs() < 0.1 * w, "centred: {panels:?} in {host:?}");
+    assert!((centre(panels[1], panels[3]) - centre(host[1], host[3])).abs() < 0.1 * h, "centred: {panels:?} in {host:?}");
+    b.screenshot(&scratch.join("2-flat.png"));
+
+    // Another design is fitted too, however the last one was zoomed.
+    for _ in 0..4 {
+        b.click(&b.find("#zoom-in"));
+    }
+    let v = b.version();
+    b.click(&b.find("#design-select option[value='sundress']"));
+    b.wait_drawing("the flat sundress", v);
+    let (panels, host) = drawing_box(&b);
+    let inside = panels[0] >= host[0] - 1.0 && panels[1] >= host[1] - 1.0 && panels[2] <= host[2] + 1.0 && panels[3] <= host[3] + 1.0;
+    assert!(inside, "the whole new drawing in view: {panels:?} in {host:?}");
+
+    eprintln!("start-from browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
+}
+
+/// At a phone's size (390 × 844 CSS pixels, touch, the page's viewport): no
+/// horizontal overflow, the drawing on screen and large, every tool within the
+/// width, and the controls reachable: a value far down the list is changed while
+/// the drawing stays in view.
+#[test]
+#[ignore = "needs chromium and chromedriver: GARMENTCODE_BROWSER_TEST=1 cargo test --test browser -- --ignored"]
+fn the_page_works_at_phone_width() {
+    let started = Instant::now();
+    let Some(Session { b, url, scratch, _server, .. }) = session("browser-phone") else { return };
+    b.cdp("Emulation.setDeviceMetricsOverride", json!({ "width": 390, "height": 844, "deviceScaleFactor": 2, "mobile": true }));
+    b.cdp("Emulation.setTouchEmulationEnabled", json!({ "enabled": true }));
+    b.goto(&url);
+    b.wait_drawing("the first drawing", 0);
+    assert_eq!(b.js("return [innerWidth, innerHeight]"), json!([390, 844]));
+    let no_overflow = "return document.documentElement.scrollWidth <= innerWidth && document.body.scrollWidth <= innerWidth";
+    assert_eq!(b.js(no_overflow), json!(true), "no horizontal overflow");
+    let (panels, host) = drawing_box(&b);
+    assert!(host[0] >= 0.0 && host[1] >= 0.0 && host[2] <= 390.0 && host[3] <= 844.0, "the drawing on screen: {host:?}");
+    assert!(host[2] - host[0] >= 360.0 && host[3] - host[1] >= 250.0, "and large: {host:?}");
+    assert!(panels[0] >= host[0] - 1.0 && panels[2] <= host[2] + 1.0 && panels[3] - panels[1] > 100.0, "the pattern in it: {panels:?}");
+    let outside = b.js("return ['#design-select', '#reset', '#random', '#seed', '#upload-button', '#download-design', '#download-zip',
+                 '#show-2d', '#show-3d', '#layout', '#show-stitches', '#zoom-in', '#zoom-fit', '#tab-design', '#tab-body', '#filter',
+                 \".param[data-path='meta.upper'] select\"]
+            .filter(css => { const r = document.querySelector(css).getBoundingClientRect();
+                             return !(r.width > 0 && r.height > 0 && r.left >= 0 && r.right <= innerWidth); })");
+    assert_eq!(outside, json!([]), "controls within the width");
+    b.screenshot(&scratch.join("1-phone.png"));
+
+    // A value far down the list: scrolled to and changed; the drawing stays in view and follows.
+    let v = b.version();
+    b.click(&b.find("details[data-group='sleeve'] > summary"));
+    let slider = b.find(".param[data-path='sleeve.length'] input[type=range]");
+    b.keys(&slider, &"\u{E012}".repeat(10)); // ArrowLeft
+    b.wait_drawing("the drawing with shorter sleeves", v);
+    assert!(b.js("return scrollY").as_f64().unwrap() > 300.0, "the page scrolled down to the control");
+    let (_, host) = drawing_box(&b);
+    assert!(host[1] >= -1.0 && host[3] <= 844.0 && host[3] - host[1] >= 250.0, "the drawing still in view: {host:?}");
+    assert_eq!(b.js(no_overflow), json!(true), "no horizontal overflow with a group open");
+    b.screenshot(&scratch.join("2-scrolled.png"));
+
+    // The body tab and a measurement.
+    b.click(&b.find("#tab-body"));
+    let v = b.version();
+    b.keys(&b.find("#m-waist"), "\u{E009}a\u{E000}70\n");
+    b.wait_drawing("the drawing for a smaller waist", v);
+    assert_eq!(b.js(no_overflow), json!(true), "no horizontal overflow on the body tab");
+    b.screenshot(&scratch.join("3-body.png"));
+
+    // And the toolbar, scrolled back to: a random design.
+    let v = b.version();
+    b.click(&b.find("#random"));
+    b.wait_drawing("a random design", v);
+    assert_eq!(b.js(no_overflow), json!(true), "no horizontal overflow with a random design");
+
+    eprintln!("phone browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
 }

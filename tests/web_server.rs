@@ -339,3 +339,54 @@ fn a_closed_stderr_does_not_stop_the_server() {
     let mut server = server;
     assert!(server.child.try_wait().unwrap().is_none(), "the server is still running");
 }
+
+/// A client that closes its sending side once its request is sent (as `nc -N`
+/// and many scripts do: `shutdown(SHUT_WR)`, then read) gets its answer, every
+/// time: a POST that builds a garment as well as a GET.
+#[test]
+fn half_closed_clients_are_answered() {
+    let s = start(&["--port", "0"]);
+    let json = r#"{"design": {"meta.upper": "Shirt"}}"#;
+    let post = format!(
+        "POST /api/pattern HTTP/1.1\r\nHost: {}\r\nContent-Type: application/json\r\nContent-Length: {}\r\n\r\n{json}",
+        s.addr,
+        json.len()
+    );
+    let get = format!("GET /api/body/mean_all HTTP/1.1\r\nHost: {}\r\n\r\n", s.addr);
+    for (what, request, expected) in [("POST", &post, "\"ok\":true"), ("GET", &get, "\"measurements\"")] {
+        let mut answered = 0;
+        for _ in 0..20 {
+            let mut c = TcpStream::connect(s.addr).unwrap();
+            c.set_read_timeout(Some(Duration::from_secs(20))).unwrap();
+            c.write_all(request.as_bytes()).unwrap();
+            c.shutdown(std::net::Shutdown::Write).unwrap();
+            let mut out = Vec::new();
+            let _ = c.read_to_end(&mut out);
+            let text = String::from_utf8_lossy(&out);
+            if text.starts_with("HTTP/1.1 200 ") && text.contains(expected) {
+                answered += 1;
+            }
+        }
+        assert_eq!(answered, 20, "{what}s answered after a half-close");
+    }
+    still_serving(s.addr);
+}
+
+/// The `Host` header must name the server's port too: a page of another server
+/// on this machine (another port) is refused, as is a `Host` without a port
+/// (which means port 80).
+#[test]
+fn the_host_must_name_the_servers_port() {
+    let s = start(&["--port", "0"]);
+    let port = s.addr.port();
+    let other = if port == u16::MAX { port - 1 } else { port + 1 };
+    let with_host = |host: &str| raw(s.addr, format!("GET /api/schema HTTP/1.1\r\nHost: {host}\r\nConnection: close\r\n\r\n").as_bytes());
+    for host in [format!("127.0.0.1:{port}"), format!("localhost:{port}")] {
+        assert_eq!(with_host(&host).0, 200, "{host}");
+    }
+    for host in [format!("127.0.0.1:{other}"), format!("localhost:{other}"), "127.0.0.1".to_string(), "localhost".to_string()] {
+        let (status, body) = with_host(&host);
+        assert_eq!(status, 403, "{host}: {body}");
+        assert!(body.contains("answers to its own address"), "{body}");
+    }
+}

@@ -17,11 +17,12 @@
 //! ([`ParamSpec::check`], [`read_design_values`]) and the body module's
 //! ([`Body::from_entries`], [`Body::check_measurement`]), never a copy of it.
 
+use std::borrow::Cow;
 use std::cell::RefCell;
 use std::sync::OnceLock;
 
 use garmentcode::io::{DesignError, from_values, read_design_values, write_design};
-use garmentcode::{Arena, Body, BodyValue, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue};
+use garmentcode::{Arena, Body, BodyValue, DesignSpace, Kind, ParamSpec, Params, Range, Value as PValue, message};
 use garments::Design;
 use garments::sample::{DatasetSampler, NamedBody, Outcome};
 use serde_json::{Map, Value as Json, json};
@@ -94,7 +95,7 @@ fn builtin_bodies() -> &'static [(&'static str, Body)] {
 fn builtin_body(name: &str) -> ApiResult<Body> {
     builtin_bodies().iter().find(|(n, _)| *n == name).map(|(_, b)| b.clone()).ok_or_else(|| {
         let known: Vec<&str> = builtin_bodies().iter().map(|(n, _)| *n).collect();
-        ApiError::new(404, format!("no built-in body '{name}' (built-in: {})", known.join(", ")))
+        ApiError::new(404, format!("no built-in body '{}' (built-in: {})", shown(name), known.join(", ")))
     })
 }
 
@@ -113,7 +114,10 @@ pub fn route(req: &Request) -> Response {
                 .map(|s| s.to_string())
                 .or_else(|| panic.downcast_ref::<String>().cloned())
                 .unwrap_or_else(|| "unknown panic".into());
-            error_response(&ApiError::new(500, format!("internal error while answering {} {}: {what}", req.method, req.path)))
+            error_response(&ApiError::new(
+                500,
+                format!("internal error while answering {} {}: {what}", shown(&req.method), shown(&req.path)),
+            ))
         }
     }
 }
@@ -123,7 +127,8 @@ fn route_inner(req: &Request) -> Response {
     let get = req.method == "GET" || req.method == "HEAD";
     let post = req.method == "POST";
     let allow = |methods: &'static str| {
-        let mut r = error_response(&ApiError::new(405, format!("{} is not allowed on {path} (allowed: {methods})", req.method)));
+        let mut r =
+            error_response(&ApiError::new(405, format!("{} is not allowed on {} (allowed: {methods})", shown(&req.method), shown(path))));
         r.headers.push(("Allow", methods.to_string()));
         r
     };
@@ -136,7 +141,7 @@ fn route_inner(req: &Request) -> Response {
         };
     }
     let Some(api) = path.strip_prefix("/api") else {
-        return error_response(&ApiError::new(404, format!("no such page: {path} (the configurator is at /, the API at /api)")));
+        return error_response(&ApiError::new(404, format!("no such page: {} (the configurator is at /, the API at /api)", shown(path))));
     };
     match api {
         "" | "/" => return if get { json_response(200, &index()) } else { allow("GET, HEAD") },
@@ -152,7 +157,7 @@ fn route_inner(req: &Request) -> Response {
     }
     const POSTS: [&str; 7] = ["/pattern", "/mesh", "/design", "/body", "/random", "/files", "/zip"];
     if !POSTS.contains(&api) {
-        return error_response(&ApiError::new(404, format!("no such API endpoint: {path} (see GET /api)")));
+        return error_response(&ApiError::new(404, format!("no such API endpoint: {} (see GET /api)", shown(path))));
     }
     if !post {
         return allow("POST");
@@ -186,7 +191,10 @@ fn parse_json(req: &Request) -> ApiResult<Json> {
     if mime.as_deref() != Some("application/json") {
         return Err(ApiError::new(
             415,
-            format!("the body must be JSON sent with Content-Type: application/json (got {})", mime.as_deref().unwrap_or("none")),
+            format!(
+                "the body must be JSON sent with Content-Type: application/json (got {})",
+                mime.as_deref().map_or("none".into(), shown)
+            ),
         ));
     }
     if req.body.iter().all(u8::is_ascii_whitespace) {
@@ -274,7 +282,7 @@ pub fn design_values(v: Option<&Json>) -> ApiResult<Vec<(String, PValue)>> {
             let mut problems = Vec::new();
             for (path, jv) in map {
                 let Some(i) = space.params().iter().position(|p| p.path == *path) else {
-                    problems.push(format!("design.{path}: unknown parameter{}", hint(path)));
+                    problems.push(format!("design.{}: unknown parameter{}", shown(path), hint(path)));
                     continue;
                 };
                 let spec: &ParamSpec = &space.params()[i];
@@ -303,8 +311,13 @@ fn design_error(e: DesignError) -> ApiError {
 /// A close parameter path for a typo, as design files get.
 fn hint(path: &str) -> String {
     let last = path.rsplit('.').next().unwrap_or(path);
-    let close: Vec<&str> =
-        space().params().iter().map(|p| p.path.as_str()).filter(|p| p.ends_with(&format!(".{last}")) || *p == last).take(3).collect();
+    let close: Vec<&str> = space()
+        .params()
+        .iter()
+        .map(|p| p.path.as_str())
+        .filter(|p| *p == last || p.strip_suffix(last).is_some_and(|head| head.ends_with('.')))
+        .take(3)
+        .collect();
     if close.is_empty() { String::new() } else { format!(" (did you mean {}?)", close.join(", ")) }
 }
 
@@ -316,6 +329,26 @@ fn json_type(v: &Json) -> &'static str {
         Json::String(_) => "string",
         Json::Array(_) => "array",
         Json::Object(_) => "object",
+    }
+}
+
+/// A key, path or name of a request as an error message shows it: as it is when
+/// short, else cut and quoted by [`message::quote`] (the start and the length).
+pub fn shown(text: &str) -> Cow<'_, str> {
+    if text.chars().count() > message::QUOTE_CHARS { Cow::Owned(message::quote(text)) } else { Cow::Borrowed(text) }
+}
+
+/// A JSON value as an error message shows it: a string quoted and shortened
+/// ([`message::quote`]), a number in a short form, an array or object by its type.
+fn json_shown(v: &Json) -> String {
+    match v {
+        Json::String(s) => message::quote(s),
+        Json::Number(n) => match n.as_f64() {
+            Some(x) if n.is_f64() => message::short(x).to_string(),
+            _ => n.to_string(), // an integer: at most 20 digits
+        },
+        Json::Array(_) | Json::Object(_) => format!("a JSON {}", json_type(v)),
+        Json::Null | Json::Bool(_) => v.to_string(),
     }
 }
 
@@ -340,10 +373,13 @@ pub fn body_from(v: Option<&Json>) -> ApiResult<(String, Body)> {
         Some(Json::Object(map)) => {
             for k in map.keys() {
                 if !["yaml", "base", "name", "measurements"].contains(&k.as_str()) {
-                    return Err(ApiError::bad(format!("body: unknown key \"{k}\" (expected yaml, or base and measurements)")));
+                    return Err(ApiError::bad(format!(
+                        "body: unknown key {} (expected yaml, name, or base and measurements)",
+                        message::quote(k)
+                    )));
                 }
             }
-            let label = map.get("name").and_then(Json::as_str).unwrap_or("custom").to_string();
+            let label = checked_name("body.name", map.get("name"), "custom")?;
             if let Some(y) = map.get("yaml") {
                 let Some(text) = y.as_str() else { return Err(ApiError::bad("body.yaml must be the text of a body file")) };
                 if map.contains_key("measurements") || map.contains_key("base") {
@@ -404,8 +440,15 @@ pub fn body_json(name: &str, b: &Body) -> Json {
 
 /// The pattern name of a request: letters, digits, `-`, `_`, `.` (it names files).
 fn pattern_name(input: &Json) -> ApiResult<String> {
-    match input.get("name") {
-        None | Some(Json::Null) => Ok("garment".into()),
+    checked_name("name", input.get("name"), "garment")
+}
+
+/// A name a request gives (the pattern's, `name`; the body's, `body.name`): 1 to
+/// [`MAX_NAME`] letters, digits, `-`, `_` or `.`, not starting with `.` (it names
+/// files and folders); `default` when absent or null.
+fn checked_name(field: &str, v: Option<&Json>, default: &str) -> ApiResult<String> {
+    match v {
+        None | Some(Json::Null) => Ok(default.into()),
         Some(Json::String(s)) => {
             let ok = !s.is_empty()
                 && s.len() <= MAX_NAME
@@ -414,10 +457,13 @@ fn pattern_name(input: &Json) -> ApiResult<String> {
             if ok {
                 Ok(s.clone())
             } else {
-                Err(ApiError::bad(format!("name: expected 1 to {MAX_NAME} letters, digits, '-', '_' or '.', got {s:?}")))
+                Err(ApiError::bad(format!(
+                    "{field}: expected 1 to {MAX_NAME} letters, digits, '-', '_' or '.' (not first), got {}",
+                    message::quote(s)
+                )))
             }
         }
-        Some(other) => Err(ApiError::bad(format!("name must be a string, not a JSON {}", json_type(other)))),
+        Some(other) => Err(ApiError::bad(format!("{field} must be a string, not a JSON {}", json_type(other)))),
     }
 }
 
@@ -515,7 +561,7 @@ fn schema_text() -> &'static str {
 pub fn builtin_design(name: &str) -> ApiResult<Json> {
     let Some((_, text)) = garments::builtin::DESIGNS.iter().find(|(n, _)| *n == name) else {
         let known: Vec<&str> = garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect();
-        return Err(ApiError::new(404, format!("no built-in design '{name}' (built-in: {})", known.join(", "))));
+        return Err(ApiError::new(404, format!("no built-in design '{}' (built-in: {})", shown(name), known.join(", "))));
     };
     let values = read_design_values(text, name, space()).map_err(design_error)?;
     Ok(json!({ "name": name, "design": values_json(&values) }))
@@ -563,7 +609,7 @@ fn check_keys(input: &Json, allowed: &[&str]) -> ApiResult<()> {
     for k in input.as_object().map(|m| m.keys().collect::<Vec<_>>()).unwrap_or_default() {
         if !allowed.contains(&k.as_str()) {
             let (last, first) = allowed.split_last().unwrap_or((&"", &[]));
-            return Err(ApiError::bad(format!("unknown key \"{k}\" (expected {} and {last})", first.join(", "))));
+            return Err(ApiError::bad(format!("unknown key {} (expected {} and {last})", message::quote(k), first.join(", "))));
         }
     }
     Ok(())
@@ -577,7 +623,7 @@ fn evaluate(input: &Json) -> ApiResult<Evaluation> {
     let layout = match input.get("layout") {
         None | Some(Json::Null) => garmentcode::draw::Layout::Placed,
         Some(Json::String(s)) => s.parse().map_err(|e: String| ApiError::bad(format!("layout: {e}")))?,
-        Some(other) => return Err(ApiError::bad(format!("layout must be \"placed\" or \"flat\", got {other}"))),
+        Some(other) => return Err(ApiError::bad(format!("layout must be \"placed\" or \"flat\", got {}", json_shown(other)))),
     };
     let design = typed_design(&values)?;
     let result = build(&design, &body, &name, layout);
@@ -667,7 +713,7 @@ pub fn mesh_text(input: &Json) -> ApiResult<String> {
         Some(v) => v
             .as_f64()
             .filter(|r| (lo..=hi).contains(r))
-            .ok_or_else(|| ApiError::bad(format!("resolution: expected a number of cm from {lo} to {hi}, got {v}")))?,
+            .ok_or_else(|| ApiError::bad(format!("resolution: expected a number of cm from {lo} to {hi}, got {}", json_shown(v))))?,
     };
     let name = pattern_name(input)?;
     let values = design_values(input.get("design"))?;
@@ -748,7 +794,9 @@ fn mesh_json(m: &garmentcode::mesh::BoxMesh) -> String {
 pub fn random(input: &Json) -> ApiResult<Json> {
     let seed = match input.get("seed") {
         None | Some(Json::Null) => 0,
-        Some(v) => v.as_u64().ok_or_else(|| ApiError::bad(format!("seed must be an integer from 0 to {}, got {v}", u64::MAX)))?,
+        Some(v) => {
+            v.as_u64().ok_or_else(|| ApiError::bad(format!("seed must be an integer from 0 to {}, got {}", u64::MAX, json_shown(v))))?
+        }
     };
     let (name, body) = body_from(input.get("body"))?;
     let sampler = DatasetSampler::new(seed, space().clone(), vec![NamedBody { name, body }])

@@ -13,9 +13,11 @@
 //!   [`Limits::max_builds`] blocking threads, separate from connections, so idle
 //!   or slow connections never take a build's place.
 //! - **Expensive requests**: a request waiting for a build slot past
-//!   [`Limits::work_deadline`], or whose client goes away, is dropped before its
-//!   build starts; a build that has started is bounded by the library's input
-//!   checks (every design and body is refused or built within about a second).
+//!   [`Limits::work_deadline`] is dropped before its build starts; a build that
+//!   has started is bounded by the library's input checks (every design and body
+//!   is refused or built within about a second). A client that closes its
+//!   sending side after its request (a half-close, as `nc -N` does) is still
+//!   answered: the end of its input is not taken for its departure.
 //! - **Shutdown**: Ctrl-C stops accepting, lets requests in progress finish (up to
 //!   a few seconds) and returns.
 //!
@@ -35,7 +37,7 @@ use hyper_util::rt::{TokioIo, TokioTimer};
 use tokio::io::AsyncWriteExt;
 use tokio::sync::Semaphore;
 
-use super::api::{ApiError, error_response, route};
+use super::api::{ApiError, error_response, route, shown};
 use super::http::{Limits, Request, Response, percent_decode};
 
 /// Bind `host:port` (`port` 0 lets the system choose).
@@ -60,17 +62,36 @@ pub fn url(addr: &SocketAddr) -> String {
     }
 }
 
-/// Whether a request's `Host` header names this server: `localhost` or an IP
-/// address (any, for a server on every interface; a loopback one otherwise), or
-/// this machine's name when the server listens beyond loopback. A DNS-rebinding
-/// page's requests carry its own domain name and are refused. Requests without a
-/// `Host` (HTTP/1.0 tools) are let through: browsers always send one.
+/// Whether a request's `Host` header names this server: its port (a `Host`
+/// without one means HTTP's default, 80), and `localhost` or an IP address (any,
+/// for a server on every interface; a loopback one otherwise), or this machine's
+/// name when the server listens beyond loopback. A DNS-rebinding page's requests
+/// carry its own domain name, and a page of another local server its port: both
+/// are refused. Requests without a `Host` (HTTP/1.0 tools) are let through:
+/// browsers always send one.
 pub fn host_allowed(host: Option<&str>, served: &SocketAddr, machine: Option<&str>) -> bool {
     let Some(host) = host else { return true };
-    let name = match host.strip_prefix('[') {
-        Some(v6) => v6.split(']').next().unwrap_or(""),
-        None => host.rsplit_once(':').map_or(host, |(h, port)| if port.bytes().all(|b| b.is_ascii_digit()) { h } else { host }),
+    let (name, port) = match host.strip_prefix('[') {
+        Some(v6) => match v6.split_once(']') {
+            Some((ip, "")) => (ip, None),
+            Some((ip, rest)) => match rest.strip_prefix(':') {
+                Some(port) => (ip, Some(port)),
+                None => return false,
+            },
+            None => return false,
+        },
+        None => match host.rsplit_once(':') {
+            Some((name, port)) => (name, Some(port)),
+            None => (host, None),
+        },
     };
+    let port_matches = match port {
+        None => served.port() == 80,
+        Some(p) => p.bytes().all(|b| b.is_ascii_digit()) && p.parse::<u16>() == Ok(served.port()),
+    };
+    if !port_matches {
+        return false;
+    }
     let name = name.trim_end_matches('.').to_ascii_lowercase();
     if name == "localhost" {
         return true;
@@ -129,7 +150,15 @@ async fn run(listener: TcpListener, limits: Limits, log: fn(&str), stop: impl st
     let connections = Arc::new(Semaphore::new(limits.max_connections.max(1)));
     let graceful = hyper_util::server::graceful::GracefulShutdown::new();
     let mut http = hyper::server::conn::http1::Builder::new();
-    http.timer(TokioTimer::new()).header_read_timeout(limits.deadline).max_buf_size(limits.max_head.max(8192)).keep_alive(true);
+    // Half-closed connections are answered: many scripted clients (`nc -N`, a
+    // `shutdown(SHUT_WR)` after the request) close their sending side once the
+    // request is sent, and read the answer. (Without it, hyper takes that end of
+    // input for a client gone and drops the request.)
+    http.timer(TokioTimer::new())
+        .header_read_timeout(limits.deadline)
+        .max_buf_size(limits.max_head.max(8192))
+        .keep_alive(true)
+        .half_close(true);
     tokio::pin!(stop);
     loop {
         let (mut stream, peer) = tokio::select! {
@@ -182,7 +211,7 @@ async fn run(listener: TcpListener, limits: Limits, log: fn(&str), stop: impl st
 /// Answer one request (never fails: every problem is a 4xx/5xx with a message).
 async fn answer(req: hyper::Request<Incoming>, peer: SocketAddr, shared: &Shared) -> hyper::Response<Full<Bytes>> {
     let arrived = Instant::now();
-    let what = format!("{} {}", req.method(), req.uri().path());
+    let what = format!("{} {}", shown(req.method().as_str()), shown(req.uri().path()));
     let response = match read(req, shared).await {
         Err(e) => error_response(&e),
         // Pages, schemas and built-in data are cheap: answered at once.
@@ -204,8 +233,9 @@ async fn read(req: hyper::Request<Incoming>, shared: &Shared) -> Result<Request,
         return Err(ApiError::new(
             403,
             format!(
-                "this server answers to its own address, not to host {:?}",
-                header(HOST).unwrap_or("").chars().take(80).collect::<String>()
+                "this server answers to its own address ({}), not to host {}",
+                shared.served,
+                garmentcode::message::quote(header(HOST).unwrap_or(""))
             ),
         ));
     }
@@ -215,7 +245,10 @@ async fn read(req: hyper::Request<Incoming>, shared: &Shared) -> Result<Request,
         if mime.as_deref() != Some("application/json") {
             return Err(ApiError::new(
                 415,
-                format!("a POST body must be JSON sent with Content-Type: application/json (got {})", mime.as_deref().unwrap_or("none")),
+                format!(
+                    "a POST body must be JSON sent with Content-Type: application/json (got {})",
+                    mime.as_deref().map_or("none".into(), shown)
+                ),
             ));
         }
     }
@@ -240,7 +273,7 @@ fn too_large(limits: &Limits) -> ApiError {
 }
 
 /// Run a POST on the build pool: wait for a slot until the request's deadline
-/// (cancelled if the client goes away meanwhile: this future is dropped), then
+/// (cancelled if the connection fails meanwhile: this future is dropped), then
 /// build on a blocking thread.
 async fn build(r: Request, arrived: Instant, shared: &Shared) -> Response {
     let left = shared.limits.work_deadline.saturating_sub(arrived.elapsed());
@@ -276,18 +309,53 @@ mod tests {
     #[test]
     fn hosts_of_a_loopback_server() {
         let served: SocketAddr = "127.0.0.1:8000".parse().unwrap();
-        for ok in [None, Some("localhost:8000"), Some("127.0.0.1:8000"), Some("[::1]:8000"), Some("LOCALHOST"), Some("127.0.0.1")] {
+        for ok in
+            [None, Some("localhost:8000"), Some("127.0.0.1:8000"), Some("[::1]:8000"), Some("LOCALHOST:8000"), Some("localhost.:8000")]
+        {
             assert!(host_allowed(ok, &served, Some("box")), "{ok:?}");
         }
-        for bad in [Some("evil.example:8000"), Some("box:8000"), Some("192.168.1.5:8000"), Some(""), Some("localhost.evil.example")] {
+        for bad in [Some("evil.example:8000"), Some("box:8000"), Some("192.168.1.5:8000"), Some(""), Some("localhost.evil.example:8000")] {
             assert!(!host_allowed(bad, &served, Some("box")), "{bad:?}");
         }
+    }
+
+    /// The port must be the server's: a page served by another program on this
+    /// machine (another port) cannot use it either.
+    #[test]
+    fn hosts_name_the_servers_port() {
+        let served: SocketAddr = "127.0.0.1:8000".parse().unwrap();
+        for bad in [
+            "127.0.0.1",
+            "localhost",
+            "127.0.0.1:80",
+            "127.0.0.1:8001",
+            "localhost:9000",
+            "[::1]:8001",
+            "[::1]",
+            "[::1]x",
+            "127.0.0.1:",
+            "127.0.0.1:+8000",
+            "127.0.0.1:65536000",
+            "[::1:8000",
+        ] {
+            assert!(!host_allowed(Some(bad), &served, Some("box")), "{bad}");
+        }
+        assert!(host_allowed(Some("127.0.0.1:08000"), &served, None), "the same number");
+        // Without a port, a Host names port 80.
+        let on_80: SocketAddr = "127.0.0.1:80".parse().unwrap();
+        for ok in ["localhost", "127.0.0.1", "[::1]", "127.0.0.1:80"] {
+            assert!(host_allowed(Some(ok), &on_80, None), "{ok}");
+        }
+        assert!(!host_allowed(Some("localhost:8000"), &on_80, None));
+        let everywhere: SocketAddr = "0.0.0.0:8000".parse().unwrap();
+        assert!(!host_allowed(Some("192.168.1.5:8001"), &everywhere, None));
+        assert!(!host_allowed(Some("box"), &everywhere, Some("box")));
     }
 
     #[test]
     fn hosts_of_a_server_on_every_interface() {
         let served: SocketAddr = "0.0.0.0:8000".parse().unwrap();
-        for ok in [Some("192.168.1.5:8000"), Some("box:8000"), Some("localhost"), Some("[fe80::1]:8000")] {
+        for ok in [Some("192.168.1.5:8000"), Some("box:8000"), Some("localhost:8000"), Some("[fe80::1]:8000")] {
             assert!(host_allowed(ok, &served, Some("box")), "{ok:?}");
         }
         assert!(!host_allowed(Some("rebind.evil.example:8000"), &served, Some("box")));

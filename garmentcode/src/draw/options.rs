@@ -23,7 +23,7 @@ impl std::str::FromStr for Layout {
         match s {
             "placed" => Ok(Layout::Placed),
             "flat" => Ok(Layout::Flat),
-            other => Err(format!("unknown layout '{other}' (expected placed or flat)")),
+            other => Err(format!("unknown layout {} (expected placed or flat)", crate::message::quote(other))),
         }
     }
 }

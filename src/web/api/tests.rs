@@ -465,3 +465,81 @@ fn mesh_requests_are_checked_like_the_others() {
     let listed = call("GET", "/api", "").1;
     assert!(listed["endpoints"].as_array().unwrap().iter().any(|e| e == "POST /api/mesh"));
 }
+
+/// Every text a request carries is refused beyond its limit, and a message shows
+/// at most a short prefix of a value and its length (and numbers in a short form):
+/// a 1 MB value never makes a 1 MB (let alone 2 MB) answer.
+#[test]
+fn huge_values_get_short_messages() {
+    const MB: usize = 1 << 20;
+    let huge = "x".repeat(MB);
+    let shown = format!("\"{}...\" ({MB} characters)", "x".repeat(garmentcode::message::QUOTE_CHARS));
+    let keyed = |v: Json| Json::Object(Map::from_iter([(huge.clone(), v)]));
+    let body_file = garments::builtin::body("mean_all").unwrap().to_yaml();
+    let cases: Vec<(&str, Json, &str)> = vec![
+        ("/api/pattern", json!({ "name": huge }), "name: expected 1 to 64 letters"),
+        ("/api/pattern", json!({ "body": { "name": huge } }), "body.name: expected 1 to 64 letters"),
+        ("/api/pattern", json!({ "design": { "meta.upper": huge } }), "design.meta.upper: "),
+        ("/api/pattern", json!({ "design": keyed(json!(1)) }), "unknown parameter"),
+        ("/api/pattern", keyed(json!(1)), "unknown key"),
+        ("/api/pattern", json!({ "layout": huge }), "unknown layout"),
+        ("/api/pattern", json!({ "body": huge }), "no built-in body"),
+        ("/api/pattern", json!({ "body": { "base": huge } }), "no built-in body"),
+        ("/api/pattern", json!({ "body": keyed(json!(1)) }), "body: unknown key"),
+        ("/api/pattern", json!({ "body": { "measurements": keyed(json!(70)) } }), "unknown measurement"),
+        ("/api/mesh", json!({ "resolution": huge }), "resolution: expected a number"),
+        ("/api/random", json!({ "seed": huge }), "seed must be an integer"),
+        (
+            "/api/body",
+            json!({ "body": { "yaml": body_file.replace("\n  waist: ", &format!("\n  waist: {huge}\n  _waist: ")) } }),
+            "body.waist: expected a number",
+        ),
+        ("/api/design", json!({ "design": format!("design:\n  meta:\n    upper:\n      v: {huge}\n") }), "design.meta.upper: "),
+    ];
+    for (path, body, message) in cases {
+        let (status, r) = post(path, body);
+        let text = r.to_string();
+        assert_eq!(status, 400, "{path}: {}", &text[..text.len().min(300)]);
+        let error = r["error"].as_str().unwrap();
+        assert!(error.contains(message), "{path}: {error:.300}");
+        assert!(error.contains(&shown), "{path}: the value's prefix and length: {error:.300}");
+        assert!(text.len() < 1000, "{path}: a short answer: {} bytes: {text:.300}", text.len());
+    }
+    for path in [format!("/api/design/{huge}"), format!("/api/body/{huge}"), format!("/{huge}"), format!("/api/{huge}")] {
+        let (status, r) = call("GET", &path, "");
+        assert_eq!(status, 404);
+        let error = r["error"].as_str().unwrap();
+        assert!(r.to_string().len() < 1000 && error.contains("xxx...\" (") && error.contains(" characters)"), "{:.300}", r.to_string());
+    }
+    let (status, r) = call(&huge, "/api/pattern", "{}");
+    assert_eq!(status, 405);
+    assert!(r.to_string().len() < 1000, "{:.300}", r.to_string());
+
+    // Numbers in a short form, not 309 digits.
+    for (body, message) in [
+        (json!({ "body": { "measurements": { "waist": 1e308 } } }), "body.waist: 1e308 cm is outside the plausible range 40 to 220 cm"),
+        (json!({ "design": { "shirt.length": -1e308 } }), "design.shirt.length: -1e+308 is outside the allowed range [0.5, 3.5]"),
+        (json!({ "layout": 1e300 }), "layout must be \"placed\" or \"flat\", got 1e300"),
+    ] {
+        let (status, r) = post("/api/pattern", body.clone());
+        assert_eq!(status, 400, "{body}");
+        assert!(r["error"].as_str().unwrap().contains(message), "{body}: {r}");
+    }
+    let (status, r) = post("/api/mesh", json!({ "resolution": 1e308 }));
+    assert_eq!(status, 400);
+    assert!(r["error"].as_str().unwrap().ends_with("got 1e308"), "{r}");
+}
+
+/// The body's name (a label: the size printed on the pattern) follows the
+/// pattern name's rule.
+#[test]
+fn the_body_name_is_checked() {
+    let (status, r) = post("/api/body", json!({ "body": { "base": "mean_female", "name": "size_38", "measurements": { "waist": 70 } } }));
+    assert_eq!(status, 200, "{r}");
+    assert_eq!(r["name"], "size_38");
+    for bad in [json!("a b"), json!(""), json!(".hidden"), json!("x".repeat(65)), json!(7)] {
+        let (status, r) = post("/api/body", json!({ "body": { "base": "mean_female", "name": bad } }));
+        assert_eq!(status, 400, "{bad}");
+        assert!(r["error"].as_str().unwrap().starts_with("body.name"), "{r}");
+    }
+}

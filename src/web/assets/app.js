@@ -10,7 +10,8 @@ const state = {
   schema: null,          // GET /api/schema
   specs: new Map(),      // path -> parameter spec
   values: {},            // path -> current value
-  startDesign: null,     // name of the built-in design Reset returns to
+  origin: null,          // the design started from: {label, preset (built-in name or null), values};
+                         // changed values are marked against it, Reset returns to it
   name: "garment",       // pattern name (file names)
   layout: "placed",      // drawing: "placed" (as on the body) or "flat" (to cut)
   bodyBase: null,        // built-in body the measurements started from
@@ -155,14 +156,14 @@ function makeControl(spec) {
   const id = "p-" + spec.path;
   const range = spec.range ? `[${spec.range[0]}, ${spec.range[1]}]` : "one of " + spec.options.map(optionLabel).join(", ");
   const prob = spec.default_prob === null ? "" : `; kept at its default by ${Math.round(spec.default_prob * 100)}% of random designs`;
-  row.title = `${spec.path} (${spec.type}, ${range}; default ${optionLabel(spec.default)}${prob})\n${spec.description}\nDouble-click the name to reset.`;
+  row.title = `${spec.path} (${spec.type}, ${range}; default ${optionLabel(spec.default)}${prob})\n${spec.description}\nDouble-click the name to return to the value of the design you started from.`;
 
   const head = document.createElement("div");
   head.className = "phead";
   const label = document.createElement("label");
   label.htmlFor = id;
   label.textContent = spec.name;
-  label.addEventListener("dblclick", () => setValue(spec.path, spec.default, true));
+  label.addEventListener("dblclick", () => setValue(spec.path, originValue(spec.path), true));
   head.append(label);
   row.append(head);
 
@@ -235,7 +236,24 @@ function refresh(path) {
     const i = spec.options.findIndex((o) => sameValue(o, v));
     row.querySelector("select").value = String(Math.max(i, 0));
   }
-  row.classList.toggle("changed", !sameValue(v, spec.default));
+  row.classList.toggle("changed", !sameValue(v, originValue(path)));
+}
+
+// The value of `path` in the design started from (the design space's default
+// before one is loaded).
+function originValue(path) {
+  const o = state.origin;
+  return o && path in o.values ? o.values[path] : state.specs.get(path).default;
+}
+
+// Start from `values` (a built-in design, a random one, a file): the controls
+// show them, nothing is marked changed, Reset comes back here.
+function startFrom(label, preset, values) {
+  state.origin = { label, preset, values: { ...values } };
+  state.values = { ...values };
+  state.view = null; // another garment: fit it
+  refreshAll();
+  schedule();
 }
 
 function refreshAll() {
@@ -248,6 +266,20 @@ function updateChangedCounts() {
     const n = details.querySelectorAll(".param.changed").length;
     details.querySelector(".changed-count").textContent = n ? `${n} changed` : "";
   }
+  showOrigin();
+}
+
+// "Start from" shows the built-in design the current one is, or what it came
+// from and whether it was edited since.
+function showOrigin() {
+  const o = state.origin;
+  const ds = $("design-select");
+  if (!o || !ds.options.length) return;
+  const edited = document.querySelector(".param.changed") !== null;
+  ds.dataset.edited = String(edited);
+  ds.options[0].textContent = o.preset && !edited ? "(custom)" : edited ? `${o.label} (edited)` : o.label;
+  ds.value = o.preset && !edited ? o.preset : "";
+  $("reset").disabled = !edited;
 }
 
 function setValue(path, v, redraw) {
@@ -257,7 +289,7 @@ function setValue(path, v, redraw) {
     const spec = state.specs.get(path);
     const row = document.querySelector(`.param[data-path="${CSS.escape(path)}"]`);
     if (spec.type === "float" || spec.type === "int") row.querySelector("input.num").value = fmt(v);
-    row.classList.toggle("changed", !sameValue(v, spec.default));
+    row.classList.toggle("changed", !sameValue(v, originValue(path)));
   }
   updateChangedCounts();
   schedule();
@@ -621,12 +653,13 @@ async function loadMesh() {
 
 async function loadDesign(name) {
   const d = await api("GET", "/api/design/" + encodeURIComponent(name));
-  state.values = d.design;
-  state.startDesign = name;
   state.name = safeName(name);
-  $("design-select").value = name;
-  refreshAll();
-  schedule();
+  startFrom(name, name, d.design);
+}
+
+function reset() {
+  const o = state.origin;
+  if (o) startFrom(o.label, o.preset, o.values);
 }
 
 async function randomDesign() {
@@ -636,11 +669,8 @@ async function randomDesign() {
   try {
     const r = await api("POST", "/api/random", { seed, body: requestBody().body });
     if (!r.ok) { showProblems("No random design", [r.error], "rejected"); return; }
-    state.values = r.design;
     state.name = "random_" + seed;
-    $("design-select").value = "";
-    refreshAll();
-    schedule();
+    startFrom(`random (seed ${seed})`, null, r.design);
   } catch (e) {
     showProblems("The server refused the request", e.problems, "error");
   }
@@ -690,14 +720,12 @@ async function upload(file) {
       $("body-select").value = "";
       showBody(b.derived);
       selectTab("body");
+      schedule();
     } else {
       const d = await api("POST", "/api/design", { design: text });
-      state.values = d.design;
       state.name = safeName(file.name);
-      $("design-select").value = "";
-      refreshAll();
+      startFrom(file.name, null, d.design);
     }
-    schedule();
   } catch (e) {
     showProblems(`${file.name} cannot be used`, e.problems, "error");
   }
@@ -736,7 +764,7 @@ async function main() {
 
   ds.addEventListener("change", () => { if (ds.value) loadDesign(ds.value).catch((e) => showProblems("Cannot load the design", e.problems, "error")); });
   bs.addEventListener("change", () => { if (bs.value) loadBody(bs.value).then(schedule, (e) => showProblems("Cannot load the body", e.problems, "error")); });
-  $("reset").addEventListener("click", () => loadDesign(state.startDesign || state.schema.default_design).catch((e) => showProblems("Cannot load the design", e.problems, "error")));
+  $("reset").addEventListener("click", reset);
   $("random").addEventListener("click", randomDesign);
   $("upload-button").addEventListener("click", () => $("upload").click());
   $("upload").addEventListener("change", (ev) => {
