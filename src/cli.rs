@@ -211,7 +211,7 @@ fn body_arg() -> NameOrFile {
 /// `garmentcode build`.
 #[derive(Args, Debug)]
 pub struct BuildArgs {
-    /// Design: a design file (.yaml) or a built-in design (t-shirt, fitted-dress, sundress, shirt-dress, jumpsuit).
+    /// Design: a design file (.yaml) or a built-in design, a preset (t-shirt, fitted-dress, sundress, shirt-dress, jumpsuit).
     #[arg(short, long, value_name = "FILE.yaml|NAME", default_value = garments::builtin::DEFAULT_DESIGN, value_parser = design_arg(), hide_possible_values = true)]
     pub design: String,
     /// Body: a body file (.yaml) or a built-in body (mean_all, mean_female, mean_male, f_smpl_average_A40, m_smpl_average_A40).

@@ -156,7 +156,7 @@ function makeControl(spec) {
   const id = "p-" + spec.path;
   const range = spec.range ? `[${spec.range[0]}, ${spec.range[1]}]` : "one of " + spec.options.map(optionLabel).join(", ");
   const prob = spec.default_prob === null ? "" : `; kept at its default by ${Math.round(spec.default_prob * 100)}% of random designs`;
-  row.title = `${spec.path} (${spec.type}, ${range}; default ${optionLabel(spec.default)}${prob})\n${spec.description}\nDouble-click the name to return to the value of the design you started from.`;
+  row.title = `${spec.path} (${spec.type}, ${range}; design-space default ${optionLabel(spec.default)}${prob})\n${spec.description}\nDouble-click the name to return to the value of the design you started from.`;
 
   const head = document.createElement("div");
   head.className = "phead";
