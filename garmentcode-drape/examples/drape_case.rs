@@ -1,0 +1,27 @@
+//! Drapes a pattern and writes the box mesh files and `<name>_sim.obj` into a folder, for
+//! judging with the reference's tools:
+//!
+//! `cargo run --release -p garmentcode-drape --example drape_case -- SPEC.json BODY.obj BODY.yaml OUT_DIR [MAX_FRAMES]`
+
+use garmentcode_drape::{BodyMesh, Settings, drape, sim_obj};
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let [spec, body, measurements, out, rest @ ..] = args.as_slice() else {
+        return Err("usage: drape_case SPEC.json BODY.obj BODY.yaml OUT_DIR [MAX_FRAMES]".into());
+    };
+    let pattern = garmentcode::Pattern::from_json(&std::fs::read_to_string(spec)?)?;
+    let mesh = garmentcode::mesh::BoxMesh::new(&pattern, garmentcode::mesh::DEFAULT_RESOLUTION)?;
+    let body = BodyMesh::load(body.as_ref())?;
+    let measurements = garmentcode::Body::from_yaml(&std::fs::read_to_string(measurements)?, measurements)?;
+    let mut settings = Settings::for_body(&measurements);
+    if let Some(frames) = rest.first() {
+        settings.max_frames = frames.parse()?;
+    }
+    let result = drape(&mesh, &body, &settings)?;
+    let out = std::path::Path::new(out);
+    mesh.write_files(out)?;
+    std::fs::write(out.join(format!("{}_sim.obj", mesh.file_prefix())), sim_obj(&mesh, &result.positions))?;
+    println!("{} vertices: {:?}", mesh.vertices.len(), result.stats);
+    Ok(())
+}

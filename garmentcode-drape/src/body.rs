@@ -1,0 +1,256 @@
+//! Body meshes: the static collider the garment drapes onto.
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use garmentcode::Vec3;
+
+use crate::bvh::{Bvh, Closest, Feature};
+
+/// Largest body file read (bytes): the reference's bodies are about 2 MB.
+pub const MAX_FILE_BYTES: u64 = 64 << 20;
+/// Most vertices a body may have.
+pub const MAX_VERTICES: usize = 1_000_000;
+/// Most triangles a body may have (after splitting polygons into fans).
+pub const MAX_TRIANGLES: usize = 2_000_000;
+/// Plausible body heights (cm, after scaling): outside this the file is not a body in metres.
+pub const HEIGHT_RANGE: (f64, f64) = (30.0, 300.0);
+
+/// Why a body mesh was refused. Every variant names the file.
+#[derive(Debug, thiserror::Error)]
+pub enum BodyError {
+    /// The file could not be read.
+    #[error("{file}: cannot read the body mesh: {reason}")]
+    Read {
+        /// The file.
+        file: String,
+        /// What went wrong.
+        reason: String,
+    },
+    /// A line of the OBJ file is malformed.
+    #[error("{file}:{line}: {reason}")]
+    Parse {
+        /// The file.
+        file: String,
+        /// 1-based line number.
+        line: usize,
+        /// What is wrong.
+        reason: String,
+    },
+    /// Too many vertices or triangles, or a file too large.
+    #[error("{file}: {what} (at most {limit} allowed)")]
+    TooLarge {
+        /// The file.
+        file: String,
+        /// What is too large, with its size.
+        what: String,
+        /// The limit.
+        limit: u64,
+    },
+    /// The mesh is not a closed surface, or has no triangles.
+    #[error("{file}: the body mesh must be a closed surface: {reason}")]
+    NotClosed {
+        /// The file.
+        file: String,
+        /// Which edges are open or shared by more than two triangles.
+        reason: String,
+    },
+    /// The mesh's height (y extent, after metres → cm) is implausible.
+    #[error("{file}: body height {height:.3} cm (y extent × 100) is outside {min}..{max} cm: the body mesh must be in metres, y up")]
+    Height {
+        /// The file.
+        file: String,
+        /// The height found (cm).
+        height: f64,
+        /// Lowest plausible height.
+        min: f64,
+        /// Highest plausible height.
+        max: f64,
+    },
+}
+
+/// A closed triangle mesh of a body, in centimetres, y up, ready for closest-point queries.
+#[derive(Clone, Debug)]
+pub struct BodyMesh {
+    /// Name (file stem or built-in name).
+    pub name: String,
+    /// Vertices (cm).
+    pub vertices: Vec<Vec3>,
+    /// Triangles (counter-clockwise seen from outside).
+    pub faces: Vec<[u32; 3]>,
+    tris: Vec<[Vec3; 3]>,
+    /// Per triangle: pseudo-normals of its corners, then of its edges `k → k+1`, then its own.
+    normals: Vec<[Vec3; 7]>,
+    bvh: Bvh,
+}
+
+/// The closest point of the body to a point, with the side the point is on.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct BodyPoint {
+    /// Point on the surface (cm).
+    pub point: Vec3,
+    /// Distance (cm), negative inside.
+    pub signed: f64,
+    /// Outward pseudo-normal of the closest feature (not unit).
+    pub normal: Vec3,
+}
+
+impl BodyMesh {
+    /// Reads a body OBJ file in metres (as the reference's `assets/bodies/*.obj`), scaled to cm.
+    pub fn load(path: &Path) -> Result<BodyMesh, BodyError> {
+        let file = path.display().to_string();
+        let read = |reason: String| BodyError::Read { file: file.clone(), reason };
+        let meta = std::fs::metadata(path).map_err(|e| read(e.to_string()))?;
+        if meta.len() > MAX_FILE_BYTES {
+            return Err(BodyError::TooLarge { file, what: format!("file of {} bytes", meta.len()), limit: MAX_FILE_BYTES });
+        }
+        let mut text = String::new();
+        use std::io::Read as _;
+        std::fs::File::open(path).and_then(|f| f.take(MAX_FILE_BYTES + 1).read_to_string(&mut text)).map_err(|e| read(e.to_string()))?;
+        if text.len() as u64 > MAX_FILE_BYTES {
+            return Err(BodyError::TooLarge { file, what: "file longer than its size said".into(), limit: MAX_FILE_BYTES });
+        }
+        let name = path.file_stem().map_or_else(|| file.clone(), |s| s.to_string_lossy().into_owned());
+        BodyMesh::from_obj(&text, &file).map(|b| BodyMesh { name, ..b })
+    }
+
+    /// Parses an OBJ text in metres (`v x y z`, `f a b c ...`; polygons become fans), scaled
+    /// to cm. `file` names the source in errors.
+    pub fn from_obj(text: &str, file: &str) -> Result<BodyMesh, BodyError> {
+        let parse = |line: usize, reason: String| BodyError::Parse { file: file.to_string(), line, reason };
+        let mut vertices = Vec::new();
+        let mut faces = Vec::new();
+        for (n, line) in text.lines().enumerate() {
+            let mut it = line.split_whitespace();
+            match it.next() {
+                Some("v") => {
+                    let mut c = [0.0; 3];
+                    for x in &mut c {
+                        let t = it.next().ok_or_else(|| parse(n + 1, "a vertex needs three coordinates".into()))?;
+                        *x = t.parse::<f64>().map_err(|e| parse(n + 1, format!("vertex coordinate '{t}': {e}")))?;
+                        if !x.is_finite() {
+                            return Err(parse(n + 1, format!("vertex coordinate '{t}' is not finite")));
+                        }
+                    }
+                    if vertices.len() == MAX_VERTICES {
+                        return Err(BodyError::TooLarge { file: file.into(), what: "more vertices".into(), limit: MAX_VERTICES as u64 });
+                    }
+                    vertices.push(Vec3::from_array(c) * 100.0);
+                }
+                Some("f") => {
+                    let mut ids = Vec::new();
+                    for t in it {
+                        let s = t.split('/').next().unwrap_or("");
+                        let i: i64 = s.parse().map_err(|e| parse(n + 1, format!("face index '{t}': {e}")))?;
+                        // OBJ indices are 1-based; negative ones count back from the last vertex.
+                        let i = if i < 0 { vertices.len() as i64 + i } else { i - 1 };
+                        if i < 0 || i >= vertices.len() as i64 {
+                            return Err(parse(n + 1, format!("face index '{t}' names no vertex (there are {} so far)", vertices.len())));
+                        }
+                        ids.push(i as u32);
+                    }
+                    if ids.len() < 3 {
+                        return Err(parse(n + 1, "a face needs at least three corners".into()));
+                    }
+                    for k in 1..ids.len() - 1 {
+                        faces.push([ids[0], ids[k], ids[k + 1]]);
+                    }
+                    if faces.len() > MAX_TRIANGLES {
+                        return Err(BodyError::TooLarge { file: file.into(), what: "more triangles".into(), limit: MAX_TRIANGLES as u64 });
+                    }
+                }
+                _ => {}
+            }
+        }
+        BodyMesh::new(file, vertices, faces)
+    }
+
+    /// A body from vertices (cm) and triangles, checked: closed (every edge in exactly two
+    /// triangles) and of plausible height. `name` names it in errors.
+    pub fn new(name: &str, vertices: Vec<Vec3>, faces: Vec<[u32; 3]>) -> Result<BodyMesh, BodyError> {
+        let not_closed = |reason: String| BodyError::NotClosed { file: name.to_string(), reason };
+        if faces.is_empty() {
+            return Err(not_closed("it has no faces".into()));
+        }
+        if let Some(f) = faces.iter().position(|f| f.iter().any(|&i| i as usize >= vertices.len())) {
+            return Err(not_closed(format!("triangle {f} names a vertex out of range")));
+        }
+        let (lo, hi) = vertices.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v.y), hi.max(v.y)));
+        let height = hi - lo;
+        if !(HEIGHT_RANGE.0..=HEIGHT_RANGE.1).contains(&height) {
+            return Err(BodyError::Height { file: name.into(), height, min: HEIGHT_RANGE.0, max: HEIGHT_RANGE.1 });
+        }
+        // Each undirected edge → the triangles using it, as (triangle, edge slot).
+        let mut edges: HashMap<(u32, u32), Vec<(usize, usize)>> = HashMap::with_capacity(faces.len() * 3 / 2);
+        for (f, t) in faces.iter().enumerate() {
+            for k in 0..3 {
+                let (a, b) = (t[k], t[(k + 1) % 3]);
+                edges.entry((a.min(b), a.max(b))).or_default().push((f, k));
+            }
+        }
+        let bad: Vec<(u32, u32)> = {
+            let mut bad: Vec<_> = edges.iter().filter(|(_, v)| v.len() != 2).map(|(k, _)| *k).collect();
+            bad.sort_unstable();
+            bad
+        };
+        if !bad.is_empty() {
+            let (a, b) = bad[0];
+            return Err(not_closed(format!(
+                "{} edge(s) are not shared by exactly two triangles (the first between vertices {} and {})",
+                bad.len(),
+                a + 1,
+                b + 1
+            )));
+        }
+        let tris: Vec<[Vec3; 3]> = faces.iter().map(|f| f.map(|i| vertices[i as usize])).collect();
+        let face_n: Vec<Vec3> = tris.iter().map(|t| (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero()).collect();
+        // Angle-weighted vertex normals.
+        let mut vn = vec![Vec3::ZERO; vertices.len()];
+        for (f, t) in tris.iter().enumerate() {
+            for k in 0..3 {
+                let (e1, e2) = (t[(k + 1) % 3] - t[k], t[(k + 2) % 3] - t[k]);
+                let angle = e1.angle_between(e2);
+                if angle.is_finite() {
+                    vn[faces[f][k] as usize] += face_n[f] * angle;
+                }
+            }
+        }
+        let mut normals: Vec<[Vec3; 7]> = Vec::with_capacity(faces.len());
+        for (f, t) in faces.iter().enumerate() {
+            let mut n = [Vec3::ZERO; 7];
+            for k in 0..3 {
+                n[k] = vn[t[k] as usize];
+                let (a, b) = (t[k], t[(k + 1) % 3]);
+                n[3 + k] = edges[&(a.min(b), a.max(b))].iter().map(|&(g, _)| face_n[g]).sum();
+            }
+            n[6] = face_n[f];
+            normals.push(n);
+        }
+        let bvh = Bvh::new(&tris);
+        Ok(BodyMesh { name: name.to_string(), vertices, faces, tris, normals, bvh })
+    }
+
+    /// The lowest and highest corner (cm).
+    pub fn bounds(&self) -> (Vec3, Vec3) {
+        self.vertices.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), v| (lo.min(*v), hi.max(*v)))
+    }
+
+    /// The closest surface point to `p` within `sqrt(max_dist2)` cm.
+    pub(crate) fn closest(&self, p: Vec3, max_dist2: f64) -> Option<BodyPoint> {
+        let Closest { point, dist2, face, feature } = self.bvh.closest(&self.tris, p, max_dist2)?;
+        let normal = self.normals[face][match feature {
+            Feature::Vertex(k) => k,
+            Feature::Edge(k) => 3 + k,
+            Feature::Face => 6,
+        }];
+        let side = if (p - point).dot(normal) < 0.0 { -1.0 } else { 1.0 };
+        Some(BodyPoint { point, signed: side * dist2.sqrt(), normal })
+    }
+
+    /// Whether segment `a`–`b` crosses the body surface.
+    pub(crate) fn segment_crosses(&self, a: Vec3, b: Vec3) -> bool {
+        let mut hit = false;
+        self.bvh.for_each_near_segment(a, b, |f| hit = hit || crate::bvh::segment_crosses(a, b - a, &self.tris[f]));
+        hit
+    }
+}
