@@ -13,6 +13,9 @@ pub const MAX_FILE_BYTES: u64 = 64 << 20;
 pub const MAX_VERTICES: usize = 1_000_000;
 /// Most triangles a body may have (after splitting polygons into fans).
 pub const MAX_TRIANGLES: usize = 2_000_000;
+/// The body parts of a segmentation, in the reference's order.
+pub const PARTS: [&str; 6] = ["body", "left_arm", "left_leg", "right_arm", "right_leg", "face_internal"];
+
 /// Plausible body heights (cm, after scaling): outside this the file is not a body in metres.
 pub const HEIGHT_RANGE: (f64, f64) = (30.0, 300.0);
 
@@ -78,6 +81,8 @@ pub struct BodyMesh {
     pub vertices: Vec<Vec3>,
     /// Triangles (counter-clockwise seen from outside).
     pub faces: Vec<[u32; 3]>,
+    /// Body parts of each vertex, a bit per entry of [`PARTS`] (empty without a segmentation).
+    parts: Vec<u8>,
     tris: Vec<[Vec3; 3]>,
     /// Per triangle: pseudo-normals of its corners, then of its edges `k → k+1`, then its own.
     normals: Vec<[Vec3; 7]>,
@@ -93,6 +98,8 @@ pub(crate) struct BodyPoint {
     pub signed: f64,
     /// Outward pseudo-normal of the closest feature (not unit).
     pub normal: Vec3,
+    /// The triangle it lies on.
+    pub face: usize,
 }
 
 impl BodyMesh {
@@ -227,7 +234,36 @@ impl BodyMesh {
             normals.push(n);
         }
         let bvh = Bvh::new(&tris);
-        Ok(BodyMesh { name: name.to_string(), vertices, faces, tris, normals, bvh })
+        Ok(BodyMesh { name: name.to_string(), vertices, faces, parts: Vec::new(), tris, normals, bvh })
+    }
+
+    /// Adds the body's part segmentation, in the reference's format
+    /// (`ggg_body_segmentation.json`: `{"body": [vertex ids], "left_arm": [...], ...}`, parts
+    /// among [`PARTS`]; other keys are ignored). `file` names the source in errors.
+    pub fn with_parts_json(mut self, text: &str, file: &str) -> Result<BodyMesh, BodyError> {
+        let parse = |reason: String| BodyError::Parse { file: file.to_string(), line: 1, reason };
+        let value: serde_json::Value =
+            serde_json::from_str(text).map_err(|e| BodyError::Parse { file: file.to_string(), line: e.line(), reason: e.to_string() })?;
+        let map = value.as_object().ok_or_else(|| parse("the segmentation must be an object of part → vertex ids".into()))?;
+        let mut parts = vec![0u8; self.vertices.len()];
+        for (bit, name) in PARTS.iter().enumerate() {
+            let Some(ids) = map.get(*name) else { continue };
+            let ids = ids.as_array().ok_or_else(|| parse(format!("part '{name}' must be a list of vertex ids")))?;
+            for id in ids {
+                let i = id
+                    .as_u64()
+                    .filter(|&i| (i as usize) < parts.len())
+                    .ok_or_else(|| parse(format!("part '{name}': {id} is not a vertex id (0..{})", self.vertices.len())))?;
+                parts[i as usize] |= 1 << bit;
+            }
+        }
+        self.parts = parts;
+        Ok(self)
+    }
+
+    /// Body parts of every vertex (a bit per entry of [`PARTS`]), if the body has a segmentation.
+    pub fn parts(&self) -> Option<&[u8]> {
+        (!self.parts.is_empty()).then_some(self.parts.as_slice())
     }
 
     /// The lowest and highest corner (cm).
@@ -244,13 +280,18 @@ impl BodyMesh {
             Feature::Face => 6,
         }];
         let side = if (p - point).dot(normal) < 0.0 { -1.0 } else { 1.0 };
-        Some(BodyPoint { point, signed: side * dist2.sqrt(), normal })
+        Some(BodyPoint { point, signed: side * dist2.sqrt(), normal, face })
+    }
+
+    /// The body's triangles (cm).
+    pub(crate) fn tris(&self) -> &[[Vec3; 3]] {
+        &self.tris
     }
 
     /// Whether segment `a`–`b` crosses the body surface.
     pub(crate) fn segment_crosses(&self, a: Vec3, b: Vec3) -> bool {
         let mut hit = false;
-        self.bvh.for_each_near_segment(a, b, |f| hit = hit || crate::bvh::segment_crosses(a, b - a, &self.tris[f]));
+        self.bvh.for_each_in_box(a.min(b), a.max(b), |f| hit = hit || crate::bvh::segment_crosses(a, b - a, &self.tris[f]).is_some());
         hit
     }
 }

@@ -143,7 +143,8 @@ impl Bvh {
             }
             if node.count > 0 {
                 for &i in &self.order[node.start as usize..(node.start + node.count) as usize] {
-                    let (q, feature) = closest_on_triangle(p, &tris[i as usize]);
+                    let (w, feature) = closest_on_triangle(p, &tris[i as usize]);
+                    let q = at(&tris[i as usize], w);
                     let d2 = (p - q).length_squared();
                     if d2 < bound || (d2 == bound && best.is_none()) {
                         bound = d2;
@@ -168,14 +169,16 @@ impl Bvh {
         best
     }
 
-    /// Calls `hit(face)` for every triangle whose box meets the segment's box.
-    pub fn for_each_near_segment(&self, a: Vec3, b: Vec3, mut hit: impl FnMut(usize)) {
-        let (lo, hi) = (a.min(b), a.max(b));
-        let mut stack = vec![0u32];
+    /// Calls `hit(face)` for every triangle whose box meets the box `[lo, hi]`.
+    pub fn for_each_in_box(&self, lo: Vec3, hi: Vec3, mut hit: impl FnMut(usize)) {
         if self.nodes.is_empty() {
             return;
         }
-        while let Some(n) = stack.pop() {
+        let mut stack = [0u32; 64];
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let n = stack[top];
             let node = self.nodes[n as usize];
             if node.hi.cmplt(lo).any() || node.lo.cmpgt(hi).any() {
                 continue;
@@ -184,64 +187,71 @@ impl Bvh {
                 for &i in &self.order[node.start as usize..(node.start + node.count) as usize] {
                     hit(i as usize);
                 }
-            } else {
-                stack.push(node.start + 1);
-                stack.push(node.start);
+            } else if top + 2 <= stack.len() {
+                stack[top] = node.start + 1;
+                stack[top + 1] = node.start;
+                top += 2;
             }
         }
     }
 }
 
-/// The closest point of triangle `t` to `p` and the feature it lies on (Ericson,
-/// *Real-Time Collision Detection*, 5.1.5).
-pub(crate) fn closest_on_triangle(p: Vec3, t: &[Vec3; 3]) -> (Vec3, Feature) {
+/// The closest point of triangle `t` to `p` as barycentric weights of its corners, and the
+/// feature it lies on (Ericson, *Real-Time Collision Detection*, 5.1.5).
+pub(crate) fn closest_on_triangle(p: Vec3, t: &[Vec3; 3]) -> ([f64; 3], Feature) {
     let [a, b, c] = *t;
     let (ab, ac, ap) = (b - a, c - a, p - a);
     let (d1, d2) = (ab.dot(ap), ac.dot(ap));
     if d1 <= 0.0 && d2 <= 0.0 {
-        return (a, Feature::Vertex(0));
+        return ([1.0, 0.0, 0.0], Feature::Vertex(0));
     }
     let bp = p - b;
     let (d3, d4) = (ab.dot(bp), ac.dot(bp));
     if d3 >= 0.0 && d4 <= d3 {
-        return (b, Feature::Vertex(1));
+        return ([0.0, 1.0, 0.0], Feature::Vertex(1));
     }
     let vc = d1 * d4 - d3 * d2;
     if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
         let v = d1 / (d1 - d3);
-        return (a + ab * v, Feature::Edge(0));
+        return ([1.0 - v, v, 0.0], Feature::Edge(0));
     }
     let cp = p - c;
     let (d5, d6) = (ab.dot(cp), ac.dot(cp));
     if d6 >= 0.0 && d5 <= d6 {
-        return (c, Feature::Vertex(2));
+        return ([0.0, 0.0, 1.0], Feature::Vertex(2));
     }
     let vb = d5 * d2 - d1 * d6;
     if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
         let w = d2 / (d2 - d6);
-        return (a + ac * w, Feature::Edge(2));
+        return ([1.0 - w, 0.0, w], Feature::Edge(2));
     }
     let va = d3 * d6 - d5 * d4;
     if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
         let w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        return (b + (c - b) * w, Feature::Edge(1));
+        return ([0.0, 1.0 - w, w], Feature::Edge(1));
     }
     let denom = va + vb + vc;
     if denom.abs() < 1e-300 {
         // A degenerate triangle: its first corner.
-        return (a, Feature::Vertex(0));
+        return ([1.0, 0.0, 0.0], Feature::Vertex(0));
     }
     let (v, w) = (vb / denom, vc / denom);
-    (a + ab * v + ac * w, Feature::Face)
+    ([1.0 - v - w, v, w], Feature::Face)
 }
 
-/// Whether segment `[o, o + d]` crosses the interior of triangle `t` (Möller–Trumbore, strict).
-pub(crate) fn segment_crosses(o: Vec3, d: Vec3, t: &[Vec3; 3]) -> bool {
+/// The point of triangle `t` with barycentric weights `w`.
+pub(crate) fn at(t: &[Vec3; 3], w: [f64; 3]) -> Vec3 {
+    t[0] * w[0] + t[1] * w[1] + t[2] * w[2]
+}
+
+/// Where segment `[o, o + d]` crosses the interior of triangle `t`, as a parameter in
+/// `(0, 1)` along it (Möller–Trumbore, strict), if it does.
+pub(crate) fn segment_crosses(o: Vec3, d: Vec3, t: &[Vec3; 3]) -> Option<f64> {
     let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
     let p = d.cross(e2);
     let det = e1.dot(p);
     if det.abs() <= 1e-12 {
-        return false;
+        return None;
     }
     let inv = 1.0 / det;
     let s = o - t[0];
@@ -250,7 +260,7 @@ pub(crate) fn segment_crosses(o: Vec3, d: Vec3, t: &[Vec3; 3]) -> bool {
     let v = d.dot(q) * inv;
     let tt = e2.dot(q) * inv;
     let eps = 1e-9;
-    u > eps && v > eps && u + v < 1.0 - eps && tt > eps && tt < 1.0 - eps
+    (u > eps && v > eps && u + v < 1.0 - eps && tt > eps && tt < 1.0 - eps).then_some(tt)
 }
 
 #[cfg(test)]
@@ -277,7 +287,7 @@ mod tests {
         for k in 0..200 {
             let f = k as f64;
             let p = Vec3::new((f * 0.37) % 12.0 - 1.0, (f * 0.53) % 3.0 - 1.0, (f * 0.71) % 12.0 - 1.0);
-            let brute = tris.iter().map(|t| (p - closest_on_triangle(p, t).0).length_squared()).fold(f64::INFINITY, f64::min);
+            let brute = tris.iter().map(|t| (p - at(t, closest_on_triangle(p, t).0)).length_squared()).fold(f64::INFINITY, f64::min);
             let hit = bvh.closest(&tris, p, f64::INFINITY).unwrap();
             assert!((hit.dist2 - brute).abs() < 1e-12, "{p}: {} vs {brute}", hit.dist2);
         }
@@ -287,8 +297,8 @@ mod tests {
     #[test]
     fn segments_cross_only_through_the_interior() {
         let t = [Vec3::ZERO, Vec3::X, Vec3::Z];
-        assert!(segment_crosses(Vec3::new(0.2, -1.0, 0.2), Vec3::new(0.0, 2.0, 0.0), &t));
-        assert!(!segment_crosses(Vec3::new(0.2, 0.5, 0.2), Vec3::new(0.0, 2.0, 0.0), &t));
-        assert!(!segment_crosses(Vec3::new(0.8, -1.0, 0.8), Vec3::new(0.0, 2.0, 0.0), &t));
+        assert_eq!(segment_crosses(Vec3::new(0.2, -1.0, 0.2), Vec3::new(0.0, 2.0, 0.0), &t), Some(0.5));
+        assert_eq!(segment_crosses(Vec3::new(0.2, 0.5, 0.2), Vec3::new(0.0, 2.0, 0.0), &t), None);
+        assert_eq!(segment_crosses(Vec3::new(0.8, -1.0, 0.8), Vec3::new(0.0, 2.0, 0.0), &t), None);
     }
 }

@@ -20,8 +20,8 @@ pub(crate) fn crossings(mesh: &BoxMesh, x: &[Vec3], body: &BodyMesh, springs: &[
             body_count += 1;
         }
         let mut hit = false;
-        bvh.for_each_near_segment(x[a], x[b], |f| {
-            hit = hit || (!faces[f].contains(&a) && !faces[f].contains(&b) && segment_crosses(x[a], x[b] - x[a], &tris[f]));
+        bvh.for_each_in_box(x[a].min(x[b]), x[a].max(x[b]), |f| {
+            hit = hit || (!faces[f].contains(&a) && !faces[f].contains(&b) && segment_crosses(x[a], x[b] - x[a], &tris[f]).is_some());
         });
         if hit {
             self_count += 1;

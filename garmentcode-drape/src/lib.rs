@@ -24,6 +24,8 @@
 pub mod body;
 mod bvh;
 mod check;
+mod parts;
+mod selfcol;
 pub mod solver;
 
 pub use body::{BodyError, BodyMesh};

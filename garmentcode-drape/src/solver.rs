@@ -16,10 +16,12 @@
 //! attachment frames) or at the frame limit. All in `f64`, single-threaded, in a fixed
 //! order: the same inputs give the same positions, bit for bit.
 //!
-//! Not yet done (the reference has them): self-collision (point–triangle, edge–edge) and
-//! the body-part "reference drag" and collision filters, which need the body's part
+//! Self-collision follows the reference too (see `selfcol`). Not yet done: the body-part
+//! "reference drag" (which pulls particles of crossing panels back onto their body part)
+//! and the body collision filters (legs ignore the arms), which need the body's part
 //! segmentation. Particles that end up inside the body are still pulled out to the closest
-//! surface point, as the reference's drag does for them.
+//! surface point, as the reference's drag does for them; the inside test is the sign of the
+//! angle-weighted pseudo-normal, not the reference's three-ray vote.
 
 use std::collections::btree_map::Entry;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
@@ -29,6 +31,8 @@ use garmentcode::Vec3;
 use garmentcode::mesh::{BoxMesh, VertexLabel};
 
 use crate::body::BodyMesh;
+use crate::parts::Parts;
+use crate::selfcol::SelfCollision;
 
 /// One attachment: the listed vertices are kept on the positive side of a plane.
 #[derive(Clone, Debug, PartialEq)]
@@ -100,6 +104,15 @@ pub struct Settings {
     pub non_static_percent: f64,
     /// Pull particles found inside the body back onto its surface (`enable_cloth_reference_drag`).
     pub body_drag: bool,
+    /// Particles farther than this (plus their radius) outside their body part while their
+    /// panel crosses a panel of another part are pulled onto the part (`cloth_reference_margin`, 0.1 cm).
+    pub reference_margin: f64,
+    /// Panel name → its pattern label (`body`, `arm`, `leg`): the body parts the panel may
+    /// be assigned to ([`Settings::with_panel_labels`]).
+    pub panel_labels: BTreeMap<String, String>,
+    /// Point–triangle and edge–edge self-collision (`enable_triangle_particle_collisions`,
+    /// `enable_edge_edge_collisions`).
+    pub self_collision: bool,
 }
 
 impl Default for Settings {
@@ -130,6 +143,9 @@ impl Default for Settings {
             static_threshold: 0.03,
             non_static_percent: 1.5,
             body_drag: true,
+            self_collision: true,
+            reference_margin: 0.1,
+            panel_labels: BTreeMap::new(),
         }
     }
 }
@@ -158,6 +174,12 @@ impl Settings {
             ],
             ..Settings::default()
         }
+    }
+
+    /// These settings with the panel labels of `pattern` (see [`Settings::panel_labels`]).
+    pub fn with_panel_labels(mut self, pattern: &garmentcode::Pattern) -> Settings {
+        self.panel_labels = pattern.panels.iter().filter_map(|p| Some((p.name.clone(), p.label.clone()?))).collect();
+        self
     }
 
     /// Checks every setting against its allowed range.
@@ -191,6 +213,7 @@ impl Settings {
             ("damping_velocity", self.damping_velocity),
             ("static_threshold", self.static_threshold),
             ("non_static_percent", self.non_static_percent),
+            ("reference_margin", self.reference_margin),
         ];
         for (name, v) in non_negative {
             if !(v.is_finite() && (0.0..=1e9).contains(&v)) {
@@ -432,7 +455,17 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
     // Last closest body point of each particle: bounds the next query.
     let mut last_point: Vec<Option<Vec3>> = vec![None; n];
     let mut contacts: Vec<Contact> = Vec::new();
-    let mut inside: Vec<usize> = Vec::new();
+    let parts = Parts::new(mesh, body, &settings.panel_labels);
+    // Who may be dragged: labelled particles (all panel particles without a segmentation).
+    let draggable: Vec<bool> = match &parts {
+        Some(parts) => parts.label.iter().map(Option::is_some).collect(),
+        None => mesh.labels.iter().map(|l| matches!(l, VertexLabel::Panel(_))).collect(),
+    };
+    // 0: no drag; 1: crossing a panel of another part, onto its own part; 2: inside the body, out.
+    let mut drag = vec![0u8; n];
+    let mut dragged: Vec<usize> = Vec::new();
+    let mut self_collision = (settings.self_collision || (parts.is_some() && settings.body_drag))
+        .then(|| SelfCollision::new(mesh.faces.iter().map(|f| f.vertices).collect(), &x));
     let (mut frames, mut converged, mut non_static) = (0, false, n);
 
     for frame in 0..settings.max_frames {
@@ -440,7 +473,7 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
         let attached = frame < settings.attachment_frames;
         // Body contacts on the frame-start positions.
         contacts.clear();
-        inside.clear();
+        drag.fill(0);
         for i in 0..n {
             let p = x[i];
             let bound = last_point[i].map_or(f64::INFINITY, |q| {
@@ -455,9 +488,27 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
                 let normal = if dir == Vec3::ZERO { hit.normal.normalize_or_zero() } else { dir * hit.signed.signum() };
                 contacts.push(Contact { particle: i, normal, point: p - normal * d });
             } else if d < -settings.contact_margin && settings.body_drag {
-                inside.push(i);
+                drag[i] = 2;
             }
         }
+        if let Some(sc) = &mut self_collision {
+            sc.detect(&x, &v, &cloth.inv_mass, &cloth.springs, (g, 1.0 / settings.fps, r), settings.self_collision);
+            if let (Some(parts), true) = (&parts, settings.body_drag) {
+                for &(k, l, face) in &sc.crossings {
+                    let face_label = sc.faces()[face].iter().find_map(|&i| parts.label[i]);
+                    let edge_label = parts.label[k].or(parts.label[l]);
+                    if let (Some(a), Some(b)) = (face_label, edge_label)
+                        && a != b
+                        && parts.is_drag_pair(a, b)
+                    {
+                        drag[k] = 1;
+                        drag[l] = 1;
+                    }
+                }
+            }
+        }
+        dragged.clear();
+        dragged.extend((0..n).filter(|&i| drag[i] != 0 && draggable[i]));
         for _ in 0..settings.substeps {
             std::mem::swap(&mut x, &mut x0);
             std::mem::swap(&mut v, &mut v0);
@@ -486,13 +537,23 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
                 let friction = (mu * depth).max(-vt.length() * dt);
                 delta[i] += (vt.normalize_or_zero() * friction - c.normal * depth) / cloth.inv_mass[i] * settings.contact_relaxation;
             }
-            // Particles inside the body: onto its closest surface point, from the substep start.
-            for &i in &inside {
-                if let Some(hit) = body.closest(x0[i], f64::INFINITY)
-                    && hit.signed < 0.0
+            // Drag, from the substep start: particles inside the body onto its closest surface
+            // point; particles of crossing panels onto their own part when off it.
+            for &i in &dragged {
+                let Some(hit) = body.closest(x0[i], f64::INFINITY) else { continue };
+                if drag[i] == 2 {
+                    if hit.signed < 0.0 {
+                        delta[i] += hit.point - x0[i];
+                    }
+                } else if let (Some(parts), Some(part)) = (&parts, parts.as_ref().and_then(|p| p.label[i]))
+                    && let Some(q) = parts.closest(part, x0[i])
+                    && (q - x0[i]).length() * hit.signed.signum() > settings.reference_margin + r
                 {
-                    delta[i] += hit.point - x0[i];
+                    delta[i] += q - x0[i];
                 }
+            }
+            if let Some(sc) = &self_collision {
+                sc.project(&x, &cloth.inv_mass, r, &mut delta);
             }
             // Springs.
             for &([i, j], rest) in &cloth.springs {
@@ -567,6 +628,10 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
             }
         }
         frames = frame + 1;
+        if std::env::var_os("DRAPE_DEBUG").is_some() && (frame % 10 == 0 || frame < 10) {
+            let (b, sx) = crate::check::crossings(mesh, &x, body, &cloth.springs);
+            eprintln!("frame {frame}: body {b} self {sx} contacts {} dragged {}", contacts.len(), dragged.len());
+        }
         if frame >= settings.zero_gravity_frames && frame >= min_frames {
             non_static = x.iter().zip(&prev).filter(|(a, b)| (**a - **b).abs().element_sum() > settings.static_threshold).count();
             if non_static == 0 || (non_static as f64) < settings.non_static_percent / 100.0 * n as f64 {
