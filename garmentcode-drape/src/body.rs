@@ -13,6 +13,17 @@ pub const MAX_FILE_BYTES: u64 = 64 << 20;
 pub const MAX_VERTICES: usize = 1_000_000;
 /// Most triangles a body may have (after splitting polygons into fans).
 pub const MAX_TRIANGLES: usize = 2_000_000;
+/// Magic bytes of the packed body format ([`BodyMesh::to_packed`]).
+const PACKED_MAGIC: &[u8; 8] = b"GCBODY1\0";
+
+/// Packed coordinates are integers in this unit (cm): 0.1 mm.
+const PACKED_UNIT: f64 = 0.01;
+
+/// The built-in bodies, packed: the reference's `mean_all` body mesh (23,752 vertices,
+/// 47,500 triangles) with its part segmentation (`ggg_body_segmentation.json`), 0.1 mm
+/// resolution. The reference's other bodies load from their OBJ files ([`BodyMesh::load`]).
+pub const BUILTIN: [(&str, &[u8]); 1] = [("mean_all", include_bytes!("../data/mean_all.body"))];
+
 /// The body parts of a segmentation, in the reference's order.
 pub const PARTS: [&str; 6] = ["body", "left_arm", "left_leg", "right_arm", "right_leg", "face_internal"];
 
@@ -119,6 +130,83 @@ impl BodyMesh {
         }
         let name = path.file_stem().map_or_else(|| file.clone(), |s| s.to_string_lossy().into_owned());
         BodyMesh::from_obj(&text, &file).map(|b| BodyMesh { name, ..b })
+    }
+
+    /// A built-in body by name (see [`BUILTIN`]), with its part segmentation.
+    pub fn builtin(name: &str) -> Result<BodyMesh, BodyError> {
+        let (name, bytes) = BUILTIN.iter().find(|(n, _)| *n == name || format!("{n}.obj") == name).ok_or_else(|| BodyError::Read {
+            file: name.to_string(),
+            reason: format!(
+                "no built-in body of that name (built in: {}); give the body mesh as an OBJ file",
+                BUILTIN.map(|(n, _)| n).join(", ")
+            ),
+        })?;
+        BodyMesh::from_packed(bytes, name)
+    }
+
+    /// The compact form of this body (for [`BUILTIN`]): magic `GCBODY1\0`, vertex and
+    /// triangle counts (u32 LE), the vertices as differences from the previous vertex in
+    /// units of 0.1 mm (i16 LE, x y z), the triangles (u16 LE corners when there are at most
+    /// 65,536 vertices, else u32), then the part bits of every vertex if the body has a
+    /// segmentation. Fails if two successive vertices are more than 3.2 m apart.
+    pub fn to_packed(&self) -> Result<Vec<u8>, String> {
+        let mut out = Vec::with_capacity(16 + self.vertices.len() * 7 + self.faces.len() * 6);
+        out.extend_from_slice(PACKED_MAGIC);
+        out.extend_from_slice(&(self.vertices.len() as u32).to_le_bytes());
+        out.extend_from_slice(&(self.faces.len() as u32).to_le_bytes());
+        let mut last = [0i64; 3];
+        for (i, v) in self.vertices.iter().enumerate() {
+            for k in 0..3 {
+                let q = (v[k] / PACKED_UNIT).round() as i64;
+                let d = i16::try_from(q - last[k]).map_err(|_| format!("vertex {i} is too far from the previous one to pack"))?;
+                out.extend_from_slice(&d.to_le_bytes());
+                last[k] = q;
+            }
+        }
+        let small = self.vertices.len() <= 1 << 16;
+        for f in &self.faces {
+            for &i in f {
+                if small {
+                    out.extend_from_slice(&(i as u16).to_le_bytes());
+                } else {
+                    out.extend_from_slice(&i.to_le_bytes());
+                }
+            }
+        }
+        out.extend_from_slice(&self.parts);
+        Ok(out)
+    }
+
+    /// Reads the compact form written by [`BodyMesh::to_packed`]; `name` names it in errors.
+    pub fn from_packed(bytes: &[u8], name: &str) -> Result<BodyMesh, BodyError> {
+        let bad = |reason: &str| BodyError::Parse { file: name.to_string(), line: 0, reason: format!("packed body: {reason}") };
+        let rest = bytes.strip_prefix(PACKED_MAGIC).ok_or_else(|| bad("not a packed body (bad magic)"))?;
+        let count = |at: usize| rest.get(at..at + 4).map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as usize);
+        let (nv, nf) = (count(0).ok_or_else(|| bad("truncated header"))?, count(4).ok_or_else(|| bad("truncated header"))?);
+        if nv > MAX_VERTICES || nf > MAX_TRIANGLES {
+            return Err(bad("too many vertices or triangles"));
+        }
+        let index_size = if nv <= 1 << 16 { 2 } else { 4 };
+        let (v_end, f_end) = (8 + nv * 6, 8 + nv * 6 + nf * 3 * index_size);
+        if rest.len() != f_end && rest.len() != f_end + nv {
+            return Err(bad("its length does not match its vertex and triangle counts"));
+        }
+        let mut last = [0i64; 3];
+        let vertices = rest[8..v_end]
+            .chunks_exact(6)
+            .map(|c| {
+                for k in 0..3 {
+                    last[k] += i16::from_le_bytes([c[2 * k], c[2 * k + 1]]) as i64;
+                }
+                Vec3::new(last[0] as f64, last[1] as f64, last[2] as f64) * PACKED_UNIT
+            })
+            .collect();
+        let index =
+            |c: &[u8]| if index_size == 2 { u16::from_le_bytes([c[0], c[1]]) as u32 } else { u32::from_le_bytes([c[0], c[1], c[2], c[3]]) };
+        let faces = rest[v_end..f_end].chunks_exact(3 * index_size).map(|c| [0, 1, 2].map(|k| index(&c[k * index_size..]))).collect();
+        let mut body = BodyMesh::new(name, vertices, faces)?;
+        body.parts = rest[f_end..].to_vec();
+        Ok(body)
     }
 
     /// Parses an OBJ text in metres (`v x y z`, `f a b c ...`; polygons become fans), scaled
@@ -286,6 +374,11 @@ impl BodyMesh {
     /// The body's triangles (cm).
     pub(crate) fn tris(&self) -> &[[Vec3; 3]] {
         &self.tris
+    }
+
+    /// Signed distance (cm) from `p` to the body surface: negative inside.
+    pub fn signed_distance(&self, p: Vec3) -> f64 {
+        self.closest(p, f64::INFINITY).map_or(f64::INFINITY, |h| h.signed)
     }
 
     /// Whether segment `a`–`b` crosses the body surface.

@@ -25,6 +25,9 @@ pub(crate) struct EdgeEdge {
 /// The garment's collision mesh and this frame's contacts.
 pub(crate) struct SelfCollision {
     faces: Vec<[usize; 3]>,
+    /// Per face, whether it is the first face of each of its edges `k → k+1` (each edge is
+    /// tested once, from that face).
+    owns: Vec<[bool; 3]>,
     tris: Vec<[Vec3; 3]>,
     bvh: Bvh,
     intersecting: Vec<bool>,
@@ -71,8 +74,20 @@ impl SelfCollision {
     pub fn new(faces: Vec<[usize; 3]>, x: &[Vec3]) -> SelfCollision {
         let tris: Vec<[Vec3; 3]> = faces.iter().map(|f| f.map(|i| x[i])).collect();
         let bvh = Bvh::new(&tris);
+        let mut first: std::collections::HashMap<[usize; 2], usize> = std::collections::HashMap::new();
+        let owns = faces
+            .iter()
+            .enumerate()
+            .map(|(f, t)| {
+                [0, 1, 2].map(|k| {
+                    let (a, b) = (t[k], t[(k + 1) % 3]);
+                    *first.entry([a.min(b), a.max(b)]).or_insert(f) == f
+                })
+            })
+            .collect();
         SelfCollision {
             faces,
+            owns,
             tris,
             bvh,
             intersecting: vec![false; x.len()],
@@ -139,7 +154,6 @@ impl SelfCollision {
             });
         }
         // Edge–edge: face edges near each spring that the look-ahead brings within the margin.
-        let mut seen: Vec<[usize; 2]> = Vec::new();
         for &([a, b], _) in edges {
             if self.intersecting[a] || self.intersecting[b] {
                 continue;
@@ -148,15 +162,14 @@ impl SelfCollision {
             let len = (pb - pa).length();
             let h = Vec3::splat(len / 2.0 + 3.0 * r);
             let mid = (pa + pb) / 2.0;
-            seen.clear();
-            let (faces, found) = (&self.faces, &mut self.edge_edge);
+            let (faces, owns, found) = (&self.faces, &self.owns, &mut self.edge_edge);
             self.bvh.for_each_in_box(mid - h, mid + h, |f| {
                 let face = faces[f];
-                for (e0, e1) in [(face[0], face[1]), (face[1], face[2]), (face[2], face[0])] {
-                    if e0 == a || e0 == b || e1 == a || e1 == b || seen.contains(&[e1, e0]) || seen.contains(&[e0, e1]) {
+                for k in 0..3 {
+                    let (e0, e1) = (face[k], face[(k + 1) % 3]);
+                    if !owns[f][k] || e0 == a || e0 == b || e1 == a || e1 == b {
                         continue;
                     }
-                    seen.push([e0, e1]);
                     let (ta, tb, dist) = closest_edge_edge(pa, pb, x[e0], x[e1], 1e-3);
                     // Near an end it is a point–triangle contact (the reference tests all four with |ab|).
                     if ta * len < r || (1.0 - ta) * len < r || tb * len < r || (1.0 - tb) * len < r || ta < 1e-5 {

@@ -628,9 +628,10 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
             }
         }
         frames = frame + 1;
-        if std::env::var_os("DRAPE_DEBUG").is_some() && (frame % 10 == 0 || frame < 10) {
+        if std::env::var_os("DRAPE_DEBUG").is_some() && (frame % 10 == 0 || frame < 10 || (395..460).contains(&frame)) {
             let (b, sx) = crate::check::crossings(mesh, &x, body, &cloth.springs);
-            eprintln!("frame {frame}: body {b} self {sx} contacts {} dragged {}", contacts.len(), dragged.len());
+            let moving = x.iter().zip(&prev).filter(|(a, b)| (**a - **b).abs().element_sum() > settings.static_threshold).count();
+            eprintln!("frame {frame}: body {b} self {sx} contacts {} dragged {} moving {moving}", contacts.len(), dragged.len());
         }
         if frame >= settings.zero_gravity_frames && frame >= min_frames {
             non_static = x.iter().zip(&prev).filter(|(a, b)| (**a - **b).abs().element_sum() > settings.static_threshold).count();
