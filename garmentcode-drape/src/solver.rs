@@ -628,11 +628,6 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
             }
         }
         frames = frame + 1;
-        if std::env::var_os("DRAPE_DEBUG").is_some() && (frame % 10 == 0 || frame < 10 || (395..460).contains(&frame)) {
-            let (b, sx) = crate::check::crossings(mesh, &x, body, &cloth.springs);
-            let moving = x.iter().zip(&prev).filter(|(a, b)| (**a - **b).abs().element_sum() > settings.static_threshold).count();
-            eprintln!("frame {frame}: body {b} self {sx} contacts {} dragged {} moving {moving}", contacts.len(), dragged.len());
-        }
         if frame >= settings.zero_gravity_frames && frame >= min_frames {
             non_static = x.iter().zip(&prev).filter(|(a, b)| (**a - **b).abs().element_sum() > settings.static_threshold).count();
             if non_static == 0 || (non_static as f64) < settings.non_static_percent / 100.0 * n as f64 {
