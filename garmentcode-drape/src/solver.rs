@@ -16,12 +16,12 @@
 //! attachment frames) or at the frame limit. All in `f64`, single-threaded, in a fixed
 //! order: the same inputs give the same positions, bit for bit.
 //!
-//! Self-collision follows the reference too (see `selfcol`). Not yet done: the body-part
-//! "reference drag" (which pulls particles of crossing panels back onto their body part)
-//! and the body collision filters (legs ignore the arms), which need the body's part
-//! segmentation. Particles that end up inside the body are still pulled out to the closest
-//! surface point, as the reference's drag does for them; the inside test is the sign of the
-//! angle-weighted pseudo-normal, not the reference's three-ray vote.
+//! Self-collision follows the reference too (see `selfcol`), and so, on a body with a part
+//! segmentation, do the assignment of panels to body parts, the drag of crossing panels
+//! back onto their part and the body collision filters (see `parts`). Particles inside the
+//! body are pulled out to the closest surface point, as the reference's drag does; the
+//! inside test is the sign of the angle-weighted pseudo-normal, not the reference's
+//! three-ray vote. Without a segmentation there is no part drag and no filter.
 
 use std::collections::btree_map::Entry;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
@@ -482,6 +482,9 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
             });
             let Some(hit) = body.closest(p, bound).or_else(|| body.closest(p, f64::INFINITY)) else { continue };
             last_point[i] = Some(hit.point);
+            if parts.as_ref().is_some_and(|parts| parts.hides(i, hit.face)) {
+                continue;
+            }
             let d = hit.signed - settings.body_thickness;
             if -settings.contact_margin < d && d < settings.contact_margin + r {
                 let dir = (p - hit.point).normalize_or_zero();
