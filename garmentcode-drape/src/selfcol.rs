@@ -154,6 +154,8 @@ impl SelfCollision {
             });
         }
         // Edge–edge: face edges near each spring that the look-ahead brings within the margin.
+        // Edges whose boxes are farther apart than the margin plus both look-aheads cannot be.
+        let reach: Vec<f64> = (0..x.len()).map(|i| ahead(i).length()).collect();
         for &([a, b], _) in edges {
             if self.intersecting[a] || self.intersecting[b] {
                 continue;
@@ -162,12 +164,18 @@ impl SelfCollision {
             let len = (pb - pa).length();
             let h = Vec3::splat(len / 2.0 + 3.0 * r);
             let mid = (pa + pb) / 2.0;
+            let (lo, hi) = (pa.min(pb), pa.max(pb));
+            let reach_ab = reach[a].max(reach[b]);
             let (faces, owns, found) = (&self.faces, &self.owns, &mut self.edge_edge);
             self.bvh.for_each_in_box(mid - h, mid + h, |f| {
                 let face = faces[f];
                 for k in 0..3 {
                     let (e0, e1) = (face[k], face[(k + 1) % 3]);
                     if !owns[f][k] || e0 == a || e0 == b || e1 == a || e1 == b {
+                        continue;
+                    }
+                    let gap = (x[e0].min(x[e1]) - hi).max(lo - x[e0].max(x[e1])).max(Vec3::ZERO).length();
+                    if gap - reach_ab - reach[e0].max(reach[e1]) > margin + 1e-9 {
                         continue;
                     }
                     let (ta, tb, dist) = closest_edge_edge(pa, pb, x[e0], x[e1], 1e-3);

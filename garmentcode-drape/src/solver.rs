@@ -454,6 +454,10 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
     let mut prev = x.clone();
     // Last closest body point of each particle: bounds the next query.
     let mut last_point: Vec<Option<Vec3>> = vec![None; n];
+    // A particle found outside the contact band, where and by how much: until it has moved
+    // that far it cannot touch the body, and its query is skipped.
+    let mut clear: Vec<Option<(Vec3, f64)>> = vec![None; n];
+    let band = settings.body_thickness + settings.contact_margin + r;
     let mut contacts: Vec<Contact> = Vec::new();
     let parts = Parts::new(mesh, body, &settings.panel_labels);
     // Who may be dragged: labelled particles (all panel particles without a segmentation).
@@ -476,12 +480,18 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
         drag.fill(0);
         for i in 0..n {
             let p = x[i];
+            if let Some((anchor, room)) = clear[i]
+                && (p - anchor).length() < room
+            {
+                continue;
+            }
             let bound = last_point[i].map_or(f64::INFINITY, |q| {
                 let d = (p - q).length() * (1.0 + 1e-12) + 1e-9;
                 d * d
             });
             let Some(hit) = body.closest(p, bound).or_else(|| body.closest(p, f64::INFINITY)) else { continue };
             last_point[i] = Some(hit.point);
+            clear[i] = (hit.signed > band).then_some((p, hit.signed - band));
             if parts.as_ref().is_some_and(|parts| parts.hides(i, hit.face)) {
                 continue;
             }
