@@ -290,7 +290,7 @@ pub struct Stats {
     pub seconds: f64,
     /// The garment came to rest (the static rule stopped the run before the frame limit).
     pub converged: bool,
-    /// Vertices that moved more than the static threshold in the last frame.
+    /// Vertices that moved more than the static threshold (L1, cm) in the last frame.
     pub non_static_vertices: usize,
     /// Spring edges crossing the body surface (the reference's `body_collisions`).
     pub body_penetrations: usize,
@@ -470,7 +470,7 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
     let mut dragged: Vec<usize> = Vec::new();
     let mut self_collision = (settings.self_collision || (parts.is_some() && settings.body_drag))
         .then(|| SelfCollision::new(mesh.faces.iter().map(|f| f.vertices).collect(), &x));
-    let (mut frames, mut converged, mut non_static) = (0, false, n);
+    let (mut frames, mut converged, mut non_static) = (0, false, 0);
 
     for frame in 0..settings.max_frames {
         let g = if frame >= settings.zero_gravity_frames { Vec3::new(0.0, -settings.gravity, 0.0) } else { Vec3::ZERO };
@@ -641,12 +641,12 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
             }
         }
         frames = frame + 1;
-        if frame >= settings.zero_gravity_frames && frame >= min_frames {
-            non_static = x.iter().zip(&prev).filter(|(a, b)| (**a - **b).abs().element_sum() > settings.static_threshold).count();
-            if non_static == 0 || (non_static as f64) < settings.non_static_percent / 100.0 * n as f64 {
-                converged = true;
-                break;
-            }
+        non_static = x.iter().zip(&prev).filter(|(a, b)| (**a - **b).abs().element_sum() > settings.static_threshold).count();
+        let is_static = non_static == 0 || (non_static as f64) < settings.non_static_percent / 100.0 * n as f64;
+        // The static rule runs after the zero-gravity frames and the attachment frames.
+        if frame >= settings.zero_gravity_frames && frame >= min_frames && is_static {
+            converged = true;
+            break;
         }
         prev.copy_from_slice(&x);
     }
