@@ -197,7 +197,7 @@ impl SelfCollision {
     }
 
     /// The first garment triangle without either end that edge `k–l` crosses, from `k`.
-    fn first_crossed(&self, x: &[Vec3], k: usize, l: usize) -> Option<usize> {
+    pub fn first_crossed(&self, x: &[Vec3], k: usize, l: usize) -> Option<usize> {
         let mut first: Option<(f64, usize)> = None;
         self.bvh.for_each_in_box(x[k].min(x[l]), x[k].max(x[l]), |f| {
             if self.faces[f].contains(&k) || self.faces[f].contains(&l) {
