@@ -21,6 +21,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if let Some(frames) = rest.first() {
         settings.max_frames = frames.parse()?;
     }
+    // Experiments: DRAPE_SELF_COLLISION=0 turns self-collision off.
+    if std::env::var("DRAPE_SELF_COLLISION").is_ok_and(|v| v == "0") {
+        settings.self_collision = false;
+    }
     let result = drape(&mesh, &body, &settings)?;
     let out = std::path::Path::new(out);
     mesh.write_files(out)?;
