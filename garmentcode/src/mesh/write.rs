@@ -28,7 +28,7 @@ impl BoxMesh {
     }
 
     fn obj_with(&self, xyz: &Coordinates, uvs: &[Vec2]) -> String {
-        let mut out = String::with_capacity(xyz.text.len() + 3 * self.vertices.len() + 44 * uvs.len() + 48 * self.faces.len() + 100);
+        let mut out = String::with_capacity(xyz.text.len() + 3 * self.vertices.len() + 48 * uvs.len() + 48 * self.faces.len() + 100);
         let _ = writeln!(out, "mtllib {}_material.mtl", self.file_prefix());
         for v in 0..self.vertices.len() {
             out.push_str("v ");
@@ -61,7 +61,7 @@ impl BoxMesh {
     /// ⌊√panels⌋ islands, 3 cm padding), scaled into `[0, 1]`.
     pub fn texture_coordinates(&self) -> Vec<Vec2> {
         let per_column = (self.panels.len() as f64).sqrt().floor().max(1.0) as usize;
-        let mut uvs = Vec::new();
+        let mut uvs = Vec::with_capacity(self.panels.iter().map(|p| p.points.len()).sum());
         let (mut x, mut y, mut column_width) = (UV_PADDING, UV_PADDING, 0.0f64);
         for (i, p) in self.panels.iter().enumerate() {
             if i > 0 && i % per_column == 0 {
@@ -135,7 +135,7 @@ impl BoxMesh {
 
     /// `<name>_sim_segmentation.txt`: one line per vertex.
     pub fn segmentation(&self) -> String {
-        let mut out = String::with_capacity(16 * self.vertices.len());
+        let mut out = String::with_capacity(24 * self.vertices.len());
         for label in &self.labels {
             match label {
                 VertexLabel::Stitch(ks) => {
@@ -196,7 +196,7 @@ impl BoxMesh {
 
     /// `<name>_sim_mesh.obj`: the welded mesh in metres, plain `v` and `f` lines.
     pub fn welded_obj_metres(&self) -> String {
-        let mut out = String::with_capacity(64 * self.vertices.len() + 24 * self.faces.len());
+        let mut out = String::with_capacity(72 * self.vertices.len() + 24 * self.faces.len());
         for v in &self.vertices {
             out.push_str("v ");
             push_xyz(&mut out, *v / 100.0);
@@ -309,7 +309,7 @@ struct Coordinates {
 
 impl Coordinates {
     fn new(vertices: &[Vec3]) -> Coordinates {
-        let mut text = String::with_capacity(60 * vertices.len());
+        let mut text = String::with_capacity(72 * vertices.len());
         let ends = vertices
             .iter()
             .map(|v| {
