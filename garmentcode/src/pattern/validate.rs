@@ -170,7 +170,8 @@ pub fn validate(p: &Pattern) -> Vec<Problem> {
 fn zero_area(panel: &super::PanelSpec) -> bool {
     let q = panel.outline_polygon(16);
     let perimeter: f64 = (0..q.len()).map(|k| (q[(k + 1) % q.len()] - q[k]).length()).sum();
-    !(panel.outline_area() > ZERO_AREA * perimeter * perimeter)
+    let area = panel.outline_area();
+    area.is_nan() || area <= ZERO_AREA * perimeter * perimeter
 }
 
 /// The structural errors, and which panels are sound enough for the warnings' tests.
