@@ -556,7 +556,7 @@ fn a_far_control_point_meshes_in_bounded_time() {
 }
 
 /// What `garmentcode check` calls errors is refused before any work: a panel scaled
-/// down to 1e-9 cm (which took 24 s and 1.7 GB), a panel whose outline encloses no
+/// down to 1e-9 cm (its edges degenerate), a panel whose outline encloses no
 /// area, a panel of two corners.
 #[test]
 fn structural_errors_are_refused_before_any_work() {
