@@ -257,3 +257,40 @@ fn an_endless_input_file_is_refused_at_a_bound() {
         assert!(!dir.join("out").exists(), "{args:?} wrote its output");
     }
 }
+
+/// `mesh` refuses what `check` calls errors (a panel scaled down to 1e-9 cm, one that
+/// encloses no area, one of two corners), as `render` does, and bounds its work: a panel
+/// at the coordinate limit is refused at once with the resolution that fits, an edge
+/// bulging 900 edge lengths out is measured and meshed; each within seconds.
+#[test]
+fn mesh_refuses_what_check_rejects_and_bounds_its_work() {
+    let dir = scratch("mesh_bounds");
+    for (file, kind) in [
+        ("spec-mesh-tiny-panel.json", "degenerate_edge"),
+        ("spec-zero-area-panel.json", "zero_area"),
+        ("spec-two-vertex-panel.json", "empty_panel"),
+    ] {
+        let path = data(file);
+        let path = path.to_str().unwrap();
+        let o = within(FAST, file, || cli(&["check", path], &dir));
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(o.status.code(), Some(1), "check {file}: {out}");
+        assert!(out.contains(&format!("error[{kind}]")), "check {file}: {out}");
+        for args in [vec!["render", path, "-o", "out"], vec!["mesh", path, "-o", "out"]] {
+            let o = within(FAST, file, || cli(&args, &dir));
+            let err = String::from_utf8_lossy(&o.stderr);
+            assert_ne!(o.status.code(), Some(0), "{args:?}: {err}");
+            assert!(err.contains(file) && err.contains(kind), "{args:?}: {err}");
+            assert!(!dir.join("out").exists(), "{args:?} wrote its output");
+        }
+    }
+    let file = "spec-mesh-100m-panel.json";
+    let o = within(FAST, file, || cli(&["mesh", data(file).to_str().unwrap(), "-o", "out"], &dir));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains(file) && err.contains("mesh it at 22 cm or coarser"), "{err}");
+    assert!(!dir.join("out").exists(), "wrote its output");
+    let file = data("spec-mesh-far-control-point.json");
+    let o = within(FAST, "far control point", || cli(&["mesh", file.to_str().unwrap(), "-o", "out", "-r", "5"], &dir));
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+}

@@ -92,7 +92,7 @@ pub use params::space::DesignSpace;
 pub use params::spec::{Kind, ParamSpec, Range, Value};
 pub use params::{Choice, ParamValue, Params, join_path};
 pub use pattern::order::panel_order;
-pub use pattern::validate::{Problem, ProblemKind, Severity, validate};
+pub use pattern::validate::{Problem, ProblemKind, Severity, structural_errors, validate};
 pub use pattern::{Curvature, EdgeSpec, PanelSpec, Pattern, Properties, StitchSide, StitchSpec};
 pub use remap::{IdMap, Remap};
 pub use rotation::Rotation;

@@ -93,7 +93,8 @@ impl MeshCurve {
         }
     }
 
-    /// Arc length of the whole curve (Béziers: adaptive Gauss–Legendre to ~1e-12).
+    /// Arc length of the whole curve (Béziers: adaptive Gauss–Legendre to about 1e-13 cm,
+    /// or 1e-14 of the length beyond 10 cm).
     pub fn length(&self) -> f64 {
         match self {
             MeshCurve::Line([a, b]) => (*b - *a).length(),
@@ -102,9 +103,25 @@ impl MeshCurve {
         }
     }
 
+    /// The length the reference's vertex count `⌈length / res⌉ + 1` rounds up: a line's by
+    /// `hypot` (Python's `abs` of a complex number), a quadratic's by svgpathtools' closed
+    /// form, which loses up to a few 1e-9 cm on nearly straight curves (an edge of a
+    /// whole number of cm that bends by a micrometre gets the count of the straight
+    /// edge). Cubics and arcs are integrated by the reference as exactly as here.
+    pub fn reference_length(&self) -> f64 {
+        let p = |v: Vec2| [v.x, v.y];
+        let len = match self {
+            MeshCurve::Line([a, b]) => (b.x - a.x).hypot(b.y - a.y),
+            MeshCurve::Quadratic(q) => crate::parity::svgpath::quad_length(&q.map(p)),
+            _ => self.length(),
+        };
+        if len.is_finite() { len } else { self.length() }
+    }
+
     fn length_between(&self, a: f64, b: f64) -> f64 {
         let whole = gauss(|t| self.speed(t), a, b);
-        adaptive(&|t| self.speed(t), a, b, whole, 1e-13, 40)
+        let mut budget = MAX_SUBDIVISIONS;
+        adaptive(&|t| self.speed(t), a, b, whole, 1e-13f64.max(LENGTH_TOLERANCE * whole.abs()), &mut budget)
     }
 
     /// `n ≥ 2` points at uniform arc length (lines and arcs: uniform parameter, the
@@ -136,7 +153,7 @@ impl MeshCurve {
                     let mut t = lo + (hi - lo) * ((target - cum[i]) / (cum[i + 1] - cum[i]).max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
                     for _ in 0..60 {
                         let f = base.0 + self.length_between(base.1, t) - target;
-                        if f.abs() < 1e-12 {
+                        if f.abs() <= 1e-12f64.max(LENGTH_TOLERANCE * total) {
                             break;
                         }
                         if f > 0.0 {
@@ -213,14 +230,26 @@ fn gauss(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
     h * X.iter().zip(W).map(|(x, w)| w * (f(m - h * x) + f(m + h * x))).sum::<f64>()
 }
 
-/// Adaptive bisection of [`gauss`] until two halves agree with the whole.
-fn adaptive(f: &dyn Fn(f64) -> f64, a: f64, b: f64, whole: f64, tol: f64, depth: u32) -> f64 {
+/// Relative accuracy of Bézier lengths beyond 10 cm, 1e-13 cm below (an absolute
+/// accuracy is out of reach of f64 on long curves: a 90 m edge has a unit in the last
+/// place of 1.8e-12 cm, and the sums of a quadrature lose a few).
+const LENGTH_TOLERANCE: f64 = 1e-14;
+
+/// Most bisections of one length integral: sharp turns (a control point hundreds of edge
+/// lengths away) need a few dozen; past the budget the halves are taken as they are,
+/// so that any curve is measured in bounded time.
+const MAX_SUBDIVISIONS: u32 = 2000;
+
+/// Adaptive bisection of [`gauss`] until two halves agree with the whole (to `tol`,
+/// halved on each level), at most `budget` bisections in all.
+fn adaptive(f: &dyn Fn(f64) -> f64, a: f64, b: f64, whole: f64, tol: f64, budget: &mut u32) -> f64 {
     let m = (a + b) / 2.0;
     let (l, r) = (gauss(f, a, m), gauss(f, m, b));
-    if depth == 0 || (l + r - whole).abs() <= tol {
+    if *budget == 0 || (l + r - whole).abs() <= tol || !(m > a && m < b) {
         return l + r;
     }
-    adaptive(f, a, m, l, tol / 2.0, depth - 1) + adaptive(f, m, b, r, tol / 2.0, depth - 1)
+    *budget -= 1;
+    adaptive(f, a, m, l, tol / 2.0, budget) + adaptive(f, m, b, r, tol / 2.0, budget)
 }
 
 #[cfg(test)]
@@ -254,6 +283,36 @@ mod tests {
             assert!((l - prev - total / 8.0).abs() < 1e-2, "{l} {prev}");
             prev = l;
         }
+    }
+
+    #[test]
+    fn a_control_point_900_edge_lengths_away_is_measured_in_bounded_time() {
+        // The reference's closed form, against the adaptive quadrature (which went on
+        // forever here: 1e-13 cm is below the precision of a 70 m length).
+        let (s, e) = (Vec2::new(39.1358, 0.0), Vec2::ZERO);
+        let d = e - s;
+        let c = MeshCurve::Quadratic([s, s + 0.5 * d + 900.0 * Vec2::new(-d.y, d.x), e]);
+        let started = std::time::Instant::now();
+        let (exact, closed) = (c.length(), c.reference_length());
+        assert!((exact - closed).abs() < 1e-9 * closed, "{exact} vs {closed}");
+        let samples = c.samples(1000);
+        assert!(started.elapsed().as_secs() < 5, "{:?}", started.elapsed());
+        // Chords of equal arcs: none longer than the arc, most as long (not at the hairpin turn).
+        let arc = exact / 999.0;
+        let chords: Vec<f64> = samples.windows(2).map(|w| (w[1] - w[0]).length()).collect();
+        assert!(chords.iter().all(|&c| c <= arc * (1.0 + 1e-9)), "a chord longer than its arc");
+        assert!(chords.iter().filter(|&&c| c > arc * 0.999).count() > 990, "uneven samples");
+    }
+
+    #[test]
+    fn vertex_counts_round_the_reference_lengths_up() {
+        // A 46 cm line whose square root of squares is 46.00000000000001 (hypot: 46).
+        let line = MeshCurve::Line([Vec2::ZERO, Vec2::new(45.548304191955516, 6.430550927960048)]);
+        assert_eq!(line.reference_length(), 46.0);
+        assert!(line.length() > 46.0);
+        // A 40 cm edge bent by 0.2 µm: 40.00000000003 cm long, 39.9999999997 by the closed form.
+        let bent = MeshCurve::Quadratic([Vec2::ZERO, Vec2::new(20.0, 4e-5), Vec2::new(40.0, 0.0)]);
+        assert!(bent.length() > 40.0 && bent.reference_length() < 40.0, "{} {}", bent.length(), bent.reference_length());
     }
 
     #[test]

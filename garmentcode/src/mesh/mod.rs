@@ -7,8 +7,10 @@
 //! any [`Pattern`] (built by a garment program or read by [`Pattern::from_json`]):
 //!
 //! 1. **Edge sampling.** Every edge gets `ceil(length / res) + 1` vertices including its
-//!    corners; both sides of a stitch get the count of the longer one. Lines and arcs are
-//!    sampled at uniform parameter, Béziers at uniform arc length ([`MeshCurve`]).
+//!    corners, the length as the reference computes it ([`MeshCurve::reference_length`]:
+//!    for an edge of a whole number of resolutions the last digit decides); both sides
+//!    of a stitch get the count of the longer one. Lines and arcs are sampled at uniform
+//!    parameter, Béziers at uniform arc length ([`MeshCurve`]).
 //! 2. **Per-panel vertices.** Stitched edges first, then free edges, each as its start
 //!    corner (unless already present), its interior samples, its end corner; the panel's
 //!    first `n_stitch_side` local vertices are those of stitched edges.
@@ -41,7 +43,11 @@
 //!
 //! Real faults of a pattern are errors naming the panel and edge ([`MeshError`]); the
 //! triangulation itself does not fail on self-crossing outlines (crossings become
-//! outline vertices) and its size is bounded by the panel's area.
+//! outline vertices). Before any work, a pattern with structural errors (those of
+//! [`structural_errors`](crate::structural_errors), what `garmentcode check` calls
+//! errors) is refused, and so is one that would need more than [`MAX_MESH_VERTICES`]
+//! vertices at the resolution asked (estimated from its edges' lengths and panels'
+//! areas), naming the resolution that fits: time and memory are bounded.
 
 mod curve;
 mod triangulate;
@@ -63,9 +69,10 @@ pub const DEFAULT_RESOLUTION: f64 = 1.0;
 /// Most vertices one edge may get (guards memory against absurd lengths).
 const MAX_EDGE_VERTICES: usize = 1_000_000;
 
-/// Most vertices a whole mesh may have (about 400 MB of triangulation at most): a
-/// pattern whose panels would need more at the resolution asked is refused.
-const MAX_MESH_VERTICES: usize = 4_000_000;
+/// Most vertices a whole mesh may have: a pattern whose panels would need more at the
+/// resolution asked is refused, with the resolution that would do (the largest
+/// built-in garment has 21,419 vertices at 1 cm).
+pub const MAX_MESH_VERTICES: usize = 1_000_000;
 
 /// What can make a pattern impossible to mesh.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -117,6 +124,22 @@ pub enum MeshError {
         edge: usize,
         /// What is wrong.
         reason: String,
+    },
+    /// The pattern has a structural error (what `garmentcode check` calls an error).
+    #[error("{0} (`garmentcode check` lists every problem)")]
+    Structural(String),
+    /// The mesh would have more than [`MAX_MESH_VERTICES`] vertices at this resolution.
+    #[error(
+        "the pattern needs about {needed} vertices at {resolution} cm, more than the {MAX_MESH_VERTICES} a mesh may have: \
+         mesh it at {coarser} cm or coarser"
+    )]
+    TooLarge {
+        /// Estimated number of vertices.
+        needed: usize,
+        /// Resolution asked (cm).
+        resolution: f64,
+        /// A resolution within the limit (cm).
+        coarser: f64,
     },
     /// A panel whose normal (the side its faces face) is undefined, or that cannot be triangulated.
     #[error("panel '{panel}': {reason}")]
@@ -283,7 +306,7 @@ impl BoxMesh {
                 }
                 let c = MeshCurve::of_edge(p, i);
                 let len = c.length();
-                let n = (len / resolution).ceil() + 1.0;
+                let n = ((c.reference_length() / resolution).ceil() + 1.0).max(2.0);
                 if !(n.is_finite() && n <= MAX_EDGE_VERTICES as f64) {
                     return Err(bad(format!("length {len} cm cannot be sampled at {resolution} cm")));
                 }
@@ -324,6 +347,10 @@ impl BoxMesh {
             }
             stitches.push(StitchMesh { sides, right_wrong: s.right_wrong, label: la.clone().or_else(|| lb.clone()), n });
         }
+        if let Some(problem) = crate::structural_errors(pattern).into_iter().next() {
+            return Err(MeshError::Structural(problem.to_string()));
+        }
+        check_size(&specs, &counts, resolution)?;
 
         // Panels: local vertices, orientation, triangulation.
         let mut panels = Vec::with_capacity(specs.len());
@@ -605,6 +632,28 @@ impl RestLengths {
             }
         }
     }
+}
+
+/// Refuses, before anything is laid out, a mesh that would have more than
+/// [`MAX_MESH_VERTICES`] vertices: the edges' samples, a row of points along them and a
+/// lattice over each panel's area (an estimate; the triangulation counts again).
+fn check_size(specs: &[&PanelSpec], counts: &[Vec<usize>], resolution: f64) -> Result<(), MeshError> {
+    // Points per cm² of an equilateral lattice of spacing 1 cm.
+    let density = 2.0 / 3f64.sqrt();
+    let boundary: f64 = counts.iter().flatten().map(|&n| n as f64).sum();
+    let area: f64 = specs.iter().map(|p| p.outline_area()).sum();
+    let needed = 2.0 * boundary + density * area / (resolution * resolution);
+    if needed <= MAX_MESH_VERTICES as f64 {
+        return Ok(());
+    }
+    // At resolution r the estimate is about 2·L/r + density·A/r² (L the edges' length):
+    // the r where that is the limit, rounded up to two significant digits.
+    let (length, limit) = (boundary * resolution, MAX_MESH_VERTICES as f64);
+    let x = (-2.0 * length + (4.0 * length * length + 4.0 * density * area * limit).sqrt()) / (2.0 * density * area).max(f64::MIN_POSITIVE);
+    let r = if x > 0.0 && x.is_finite() { 1.0 / x } else { 2.0 * length / limit };
+    let e = r.log10().floor() as i32 - 1;
+    let coarser = if e < 0 { (r * 10f64.powi(-e)).ceil() / 10f64.powi(-e) } else { (r / 10f64.powi(e)).ceil() * 10f64.powi(e) };
+    Err(MeshError::TooLarge { needed: needed.min(usize::MAX as f64) as usize, resolution, coarser })
 }
 
 /// Whether the panel's outline runs counter-clockwise, decided as the reference does:

@@ -165,7 +165,8 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, 
     for (&v, &a) in &crossing {
         map[v] = a;
     }
-    let mut points = boundary.to_vec();
+    let mut points = Vec::with_capacity(cdt.num_vertices() + lattice.points.len());
+    points.extend_from_slice(boundary);
     for (i, v) in cdt.vertices().enumerate() {
         if map[i] == usize::MAX && used[i] {
             map[i] = points.len();

@@ -24,14 +24,18 @@ impl BoxMesh {
     /// `<name>_boxmesh.obj`: `mtllib`, `v` (cm, Python float repr), `vt` (one per panel-local
     /// vertex), `s 1`, `usemtl panels_texture`, `f v/vt v/vt v/vt`.
     pub fn obj(&self) -> String {
-        let n_uv: usize = self.panels.iter().map(|p| p.points.len()).sum();
-        let mut out = String::with_capacity(64 * self.vertices.len() + 44 * n_uv + 48 * self.faces.len() + 100);
+        self.obj_with(&Coordinates::new(&self.vertices), &self.texture_coordinates())
+    }
+
+    fn obj_with(&self, xyz: &Coordinates, uvs: &[Vec2]) -> String {
+        let mut out = String::with_capacity(xyz.text.len() + 3 * self.vertices.len() + 48 * uvs.len() + 48 * self.faces.len() + 100);
         let _ = writeln!(out, "mtllib {}_material.mtl", self.file_prefix());
-        for v in &self.vertices {
+        for v in 0..self.vertices.len() {
             out.push_str("v ");
-            push_xyz(&mut out, *v);
+            out.push_str(xyz.get(v));
+            out.push('\n');
         }
-        for uv in self.texture_coordinates() {
+        for uv in uvs {
             out.push_str("vt ");
             write_python_float(&mut out, uv.x);
             out.push(' ');
@@ -57,7 +61,7 @@ impl BoxMesh {
     /// ⌊√panels⌋ islands, 3 cm padding), scaled into `[0, 1]`.
     pub fn texture_coordinates(&self) -> Vec<Vec2> {
         let per_column = (self.panels.len() as f64).sqrt().floor().max(1.0) as usize;
-        let mut uvs = Vec::new();
+        let mut uvs = Vec::with_capacity(self.panels.iter().map(|p| p.points.len()).sum());
         let (mut x, mut y, mut column_width) = (UV_PADDING, UV_PADDING, 0.0f64);
         for (i, p) in self.panels.iter().enumerate() {
             if i > 0 && i % per_column == 0 {
@@ -79,10 +83,13 @@ impl BoxMesh {
     /// in a fabric colour on white, [`TEXTURE_SIZE`] pixels square. The reference draws
     /// its islands at 1,500 dpi (about 10 MB a garment); this one is a few kilobytes.
     pub fn texture_png(&self) -> Vec<u8> {
+        self.texture_png_with(&self.texture_coordinates())
+    }
+
+    fn texture_png_with(&self, uvs: &[Vec2]) -> Vec<u8> {
         const FABRIC: [u8; 3] = [0xd8, 0xc8, 0xb0];
         let n = TEXTURE_SIZE;
         let mut rgb = vec![0xffu8; 3 * n * n];
-        let uvs = self.texture_coordinates();
         let scale = n as f64;
         for f in &self.faces {
             // Image rows run down, texture v up.
@@ -128,7 +135,7 @@ impl BoxMesh {
 
     /// `<name>_sim_segmentation.txt`: one line per vertex.
     pub fn segmentation(&self) -> String {
-        let mut out = String::with_capacity(16 * self.vertices.len());
+        let mut out = String::with_capacity(24 * self.vertices.len());
         for label in &self.labels {
             match label {
                 VertexLabel::Stitch(ks) => {
@@ -189,7 +196,7 @@ impl BoxMesh {
 
     /// `<name>_sim_mesh.obj`: the welded mesh in metres, plain `v` and `f` lines.
     pub fn welded_obj_metres(&self) -> String {
-        let mut out = String::with_capacity(64 * self.vertices.len() + 24 * self.faces.len());
+        let mut out = String::with_capacity(72 * self.vertices.len() + 24 * self.faces.len());
         for v in &self.vertices {
             out.push_str("v ");
             push_xyz(&mut out, *v / 100.0);
@@ -209,7 +216,11 @@ impl BoxMesh {
     /// is the panel index (panels named in `comment panel <i> <name>` lines) or -1 for a
     /// stitch vertex and `stitch` the first stitch of a stitch vertex (-1 otherwise).
     pub fn ply(&self) -> String {
-        let mut out = String::with_capacity(64 * self.vertices.len() + 24 * self.faces.len() + 1000);
+        self.ply_with(&Coordinates::new(&self.vertices))
+    }
+
+    fn ply_with(&self, xyz: &Coordinates) -> String {
+        let mut out = String::with_capacity(xyz.text.len() + 16 * self.vertices.len() + 24 * self.faces.len() + 1000);
         out.push_str("ply\nformat ascii 1.0\ncomment garmentcode box mesh, cm\n");
         for (i, p) in self.panels.iter().enumerate() {
             let _ = writeln!(out, "comment panel {i} {}", p.name);
@@ -221,12 +232,12 @@ impl BoxMesh {
             self.vertices.len(),
             self.faces.len()
         );
-        for (v, label) in self.vertices.iter().zip(&self.labels) {
+        for (v, label) in self.labels.iter().enumerate() {
             let (segment, stitch) = match label {
                 VertexLabel::Stitch(ks) => (-1, ks.first().map_or(-1, |&k| k as i64)),
                 VertexLabel::Panel(p) => (*p as i64, -1),
             };
-            push_xyz_line(&mut out, *v);
+            out.push_str(xyz.get(v));
             out.push(' ');
             out.push_str(itoa::Buffer::new().format(segment));
             out.push(' ');
@@ -249,15 +260,17 @@ impl BoxMesh {
     /// PLY and the texture the material names.
     pub fn files(&self) -> Vec<(String, Vec<u8>)> {
         let name = self.file_prefix();
+        // Shared by the OBJ and the PLY, and by the OBJ and the texture.
+        let (xyz, uvs) = (Coordinates::new(&self.vertices), self.texture_coordinates());
         let bytes = [
-            self.obj().into_bytes(),
+            self.obj_with(&xyz, &uvs).into_bytes(),
             self.material().into_bytes(),
             self.segmentation().into_bytes(),
             self.rest_lengths_pickle(),
             self.vertex_labels_yaml().into_bytes(),
             self.welded_obj_metres().into_bytes(),
-            self.ply().into_bytes(),
-            self.texture_png(),
+            self.ply_with(&xyz).into_bytes(),
+            self.texture_png_with(&uvs),
         ];
         FILE_SUFFIXES.iter().zip(bytes).map(|(suffix, b)| (format!("{name}{suffix}"), b)).collect()
     }
@@ -286,6 +299,31 @@ pub const FILE_SUFFIXES: [&str; 8] = [
     "_boxmesh.ply",
     "_texture_fabric.png",
 ];
+
+/// Every vertex's `x y z` in Python's float repr, laid out once for the OBJ and the PLY.
+struct Coordinates {
+    text: String,
+    /// Vertex `i`'s text ends at `ends[i]` (and starts at `ends[i - 1]`).
+    ends: Vec<usize>,
+}
+
+impl Coordinates {
+    fn new(vertices: &[Vec3]) -> Coordinates {
+        let mut text = String::with_capacity(72 * vertices.len());
+        let ends = vertices
+            .iter()
+            .map(|v| {
+                push_xyz_line(&mut text, *v);
+                text.len()
+            })
+            .collect();
+        Coordinates { text, ends }
+    }
+
+    fn get(&self, i: usize) -> &str {
+        &self.text[if i == 0 { 0 } else { self.ends[i - 1] }..self.ends[i]]
+    }
+}
 
 fn push_int(out: &mut String, i: usize) {
     out.push_str(itoa::Buffer::new().format(i));

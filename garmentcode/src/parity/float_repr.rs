@@ -43,8 +43,10 @@ pub(crate) fn write_python_float(out: &mut String, x: f64) {
     let unsigned = text.strip_prefix(b"-").unwrap_or(text);
     // zmij writes decimal exponents -5..=15 positionally, exactly as Python does
     // from -4 on ("0.00012", "12.5", "1000000000000000.0"); only the others
-    // ("0.00001", "1e16") need laying out again.
-    if !unsigned.contains(&b'e') && !unsigned.starts_with(b"0.0000") {
+    // ("0.00001", "1e16") need laying out again. Most numbers are told by their
+    // value (their shortest digits have an exponent from -4 to 14), without a search
+    // of the text.
+    if (1e-4..1e15).contains(&x.abs()) || (!unsigned.contains(&b'e') && !unsigned.starts_with(b"0.0000")) {
         out.push_str(formatted);
         return;
     }

@@ -226,6 +226,27 @@ impl PanelSpec {
         Edge { start: s, end: t, curve }
     }
 
+    /// The outline as a polygon, relative to the first edge's start: each edge's start
+    /// and, on curves, `steps − 1` points between (edges and corners must be valid).
+    pub fn outline_polygon(&self, steps: usize) -> Vec<Vec2> {
+        let Some(first) = self.edges.first() else { return Vec::new() };
+        let origin = self.vertex(first.endpoints[0]);
+        let mut out = Vec::new();
+        for i in 0..self.edges.len() {
+            let e = self.edge_geom(i);
+            let n = if matches!(e.curve, Curve::Line) { 1 } else { steps.max(1) };
+            out.extend((0..n).map(|k| e.point(k as f64 / n as f64) - origin));
+        }
+        out
+    }
+
+    /// Area enclosed by the outline: the shoelace formula over [`outline_polygon`](Self::outline_polygon)
+    /// with curves at 16 points (for curves an estimate).
+    pub fn outline_area(&self) -> f64 {
+        let q = self.outline_polygon(16);
+        (0..q.len()).map(|k| q[k].perp_dot(q[(k + 1) % q.len()])).sum::<f64>().abs() / 2.0
+    }
+
     /// Rotation of the panel.
     pub fn rotation(&self) -> Rotation {
         Rotation::from_euler_xyz_degrees(self.rotation)

@@ -21,8 +21,11 @@ pub enum Severity {
 pub enum ProblemKind {
     /// The pattern has no panels.
     EmptyPattern,
-    /// A panel with no edges or fewer than two vertices.
+    /// A panel with no edges or fewer than three vertices.
     EmptyPanel,
+    /// A panel whose outline encloses no area (its corners on one line, or an
+    /// outline that goes out and back the same way).
+    ZeroArea,
     /// An edge's end is not the next edge's start.
     OpenLoop,
     /// An edge refers to a vertex that does not exist.
@@ -49,6 +52,7 @@ impl ProblemKind {
         match self {
             ProblemKind::EmptyPattern => "empty_pattern",
             ProblemKind::EmptyPanel => "empty_panel",
+            ProblemKind::ZeroArea => "zero_area",
             ProblemKind::OpenLoop => "open_loop",
             ProblemKind::VertexOutOfRange => "vertex_out_of_range",
             ProblemKind::DegenerateEdge => "degenerate_edge",
@@ -104,8 +108,74 @@ impl fmt::Display for Problem {
 /// Relative length difference between stitched edges reported as a warning.
 const LENGTH_TOLERANCE: f64 = 0.01;
 
+/// Area, relative to the squared perimeter, at or below which a panel encloses no
+/// area: rounding leaves about 1e-16 on an outline whose corners lie on one line,
+/// and a sliver 1 µm wide and 1 m long still has 2.5e-7.
+const ZERO_AREA: f64 = 1e-12;
+
+/// The structural errors of a pattern, in file order: what `garmentcode check` calls
+/// errors, and what drawing, printing and meshing refuse. Cheap (no intersection
+/// tests), unlike [`validate`].
+pub fn structural_errors(p: &Pattern) -> Vec<Problem> {
+    structure(p).0
+}
+
 /// All problems of a pattern, errors first (each group in file order).
 pub fn validate(p: &Pattern) -> Vec<Problem> {
+    let (mut out, structurally_ok) = structure(p);
+
+    // Warnings, only on structurally sound panels.
+    for panel in &p.panels {
+        if structurally_ok.get(panel.name.as_str()) == Some(&true) && intersect::has_self_intersection(&intersect::spec_segments(panel)) {
+            out.push(Problem {
+                kind: ProblemKind::SelfIntersection,
+                severity: Severity::Warning,
+                panel: Some(panel.name.clone()),
+                edge: None,
+                stitch: None,
+                ratio: None,
+                message: "the outline crosses itself".into(),
+            });
+        }
+    }
+    for (si, s) in p.stitches.iter().enumerate() {
+        let len = |side: &super::StitchSide| {
+            p.panel(&side.panel)
+                .filter(|pp| side.edge < pp.edges.len() && structurally_ok.get(pp.name.as_str()) == Some(&true))
+                .map(|pp| pp.edge_geom(side.edge).length())
+        };
+        if let (Some(l1), Some(l2)) = (len(&s.sides[0]), len(&s.sides[1])) {
+            let ratio = l1 / l2;
+            if (ratio - 1.0).abs() > LENGTH_TOLERANCE {
+                out.push(Problem {
+                    kind: ProblemKind::StitchLengthMismatch,
+                    severity: Severity::Warning,
+                    panel: Some(s.sides[0].panel.clone()),
+                    edge: Some(s.sides[0].edge),
+                    stitch: Some(si),
+                    ratio: Some(ratio),
+                    message: format!(
+                        "{:.2} cm stitched to {:.2} cm ({}:{}), ratio {ratio:.3} (a gather, or a mistake)",
+                        l1, l2, s.sides[1].panel, s.sides[1].edge,
+                    ),
+                });
+            }
+        }
+    }
+    out.sort_by_key(|pr| pr.severity);
+    out
+}
+
+/// Whether a panel's outline (valid corner indices) encloses no area.
+fn zero_area(panel: &super::PanelSpec) -> bool {
+    let q = panel.outline_polygon(16);
+    let perimeter: f64 = (0..q.len()).map(|k| (q[(k + 1) % q.len()] - q[k]).length()).sum();
+    let area = panel.outline_area();
+    area.is_nan() || area <= ZERO_AREA * perimeter * perimeter
+}
+
+/// The structural errors, and which panels are sound enough for the warnings' tests.
+fn structure(p: &Pattern) -> (Vec<Problem>, HashMap<&str, bool>) {
     let mut out = Vec::new();
     let err = |kind, panel: Option<&str>, edge, stitch, message: String| Problem {
         kind,
@@ -124,8 +194,14 @@ pub fn validate(p: &Pattern) -> Vec<Problem> {
         let mut ok = true;
         let name = panel.name.as_str();
         let nv = panel.vertices.len();
-        if panel.edges.is_empty() || nv < 2 {
-            out.push(err(ProblemKind::EmptyPanel, Some(name), None, None, format!("{} edges and {nv} vertices", panel.edges.len())));
+        if panel.edges.is_empty() || nv < 3 {
+            out.push(err(
+                ProblemKind::EmptyPanel,
+                Some(name),
+                None,
+                None,
+                format!("{} edges and {nv} vertices (a panel needs at least three corners)", panel.edges.len()),
+            ));
             ok = false;
         }
         for (i, e) in panel.edges.iter().enumerate() {
@@ -163,6 +239,10 @@ pub fn validate(p: &Pattern) -> Vec<Problem> {
                     ok = false;
                 }
             }
+        }
+        if ok && zero_area(panel) {
+            out.push(err(ProblemKind::ZeroArea, Some(name), None, None, "the outline encloses no area".into()));
+            ok = false;
         }
         structurally_ok.insert(name, ok);
     }
@@ -210,44 +290,5 @@ pub fn validate(p: &Pattern) -> Vec<Problem> {
         }
     }
 
-    // Warnings, only on structurally sound panels.
-    for panel in &p.panels {
-        if structurally_ok.get(panel.name.as_str()) == Some(&true) && intersect::has_self_intersection(&intersect::spec_segments(panel)) {
-            out.push(Problem {
-                kind: ProblemKind::SelfIntersection,
-                severity: Severity::Warning,
-                panel: Some(panel.name.clone()),
-                edge: None,
-                stitch: None,
-                ratio: None,
-                message: "the outline crosses itself".into(),
-            });
-        }
-    }
-    for (si, s) in p.stitches.iter().enumerate() {
-        let len = |side: &super::StitchSide| {
-            p.panel(&side.panel)
-                .filter(|pp| side.edge < pp.edges.len() && structurally_ok.get(pp.name.as_str()) == Some(&true))
-                .map(|pp| pp.edge_geom(side.edge).length())
-        };
-        if let (Some(l1), Some(l2)) = (len(&s.sides[0]), len(&s.sides[1])) {
-            let ratio = l1 / l2;
-            if (ratio - 1.0).abs() > LENGTH_TOLERANCE {
-                out.push(Problem {
-                    kind: ProblemKind::StitchLengthMismatch,
-                    severity: Severity::Warning,
-                    panel: Some(s.sides[0].panel.clone()),
-                    edge: Some(s.sides[0].edge),
-                    stitch: Some(si),
-                    ratio: Some(ratio),
-                    message: format!(
-                        "{:.2} cm stitched to {:.2} cm ({}:{}), ratio {ratio:.3} (a gather, or a mistake)",
-                        l1, l2, s.sides[1].panel, s.sides[1].edge,
-                    ),
-                });
-            }
-        }
-    }
-    out.sort_by_key(|pr| pr.severity);
-    out
+    (out, structurally_ok)
 }

@@ -16,6 +16,6 @@ mod segment;
 
 pub use path::{Crossing, SvgPath, bbox_paths, edge_seq_from_path, halves_from_outlines, seg_length, split_halves};
 pub use segment::{
-    IntersectError, MAX_PAIRS, Num, P, Seg, lapack, np_roots, polyroots_real, polyroots01, py_float_hash, py_set_order,
+    IntersectError, MAX_PAIRS, Num, P, Seg, lapack, np_roots, polyroots_real, polyroots01, py_float_hash, py_set_order, quad_length,
     try_has_self_intersection, try_intersect, try_intersect_as,
 };

@@ -1705,11 +1705,13 @@ fn bezier_by_line(bez: &[P], line: &[P; 2], line_num: Num, out: &mut Vec<(f64, f
 }
 
 // ---------------------------------------------------------------------------
-// Lengths (only the subdivision budget depends on them)
+// Lengths (the subdivision budget depends on them, and the box mesh's vertex counts)
 // ---------------------------------------------------------------------------
 
-/// svgpathtools' closed-form quadratic length over [0, 1].
-fn quad_length(p: &[P; 3]) -> f64 {
+/// `QuadraticBezier.length()` of svgpathtools: its closed form, bit for bit (which
+/// loses digits on nearly straight curves: the reference's count of mesh vertices on
+/// an edge rounds this value up).
+pub fn quad_length(p: &[P; 3]) -> f64 {
     let a = [p[0][0] - 2.0 * p[1][0] + p[2][0], p[0][1] - 2.0 * p[1][1] + p[2][1]];
     let b = [2.0 * (p[1][0] - p[0][0]), 2.0 * (p[1][1] - p[0][1])];
     let abs_a = a[0].hypot(a[1]);

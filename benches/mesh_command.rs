@@ -1,0 +1,78 @@
+//! The whole `garmentcode mesh` process per garment: start, read the specification,
+//! mesh at 1 cm, write the folder of files (into a fresh folder under
+//! `$GARMENTCODE_BENCH_DIR`, default the temporary directory), exit. For every reference
+//! case with a specification (`tests/data/cases`), 11 runs: their mean CPU time (user and
+//! system, from the kernel's account of this process's children in `/proc/self/stat`,
+//! in 10 ms ticks summed over the 11 runs) and their median wall-clock time; then the
+//! distribution over the cases beside the reference's median of 3.68 s of CPU to
+//! generate and serialise a box mesh (`BoxMesh(...).load()` and `serialize()`, shared
+//! reference FORMAT.md §11).
+//!
+//! `cargo bench --bench mesh_command`
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+/// The reference's median CPU time per garment to generate and serialise the box mesh, s.
+const REFERENCE_S: f64 = 3.68;
+
+fn main() {
+    let cases = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/cases");
+    let mut specs: Vec<PathBuf> = std::fs::read_dir(&cases)
+        .expect("reference cases")
+        .map(|e| e.expect("entry").path().join("specification.json"))
+        .filter(|p| p.exists())
+        .collect();
+    specs.sort();
+    let root = std::env::var_os("GARMENTCODE_BENCH_DIR")
+        .map_or_else(std::env::temp_dir, PathBuf::from)
+        .join(format!("garmentcode-bench-mesh-command-{}", std::process::id()));
+    let (mut per, mut cpu) = (Vec::new(), Vec::new());
+    for spec in &specs {
+        let ticks = children_ticks();
+        let name = spec.parent().and_then(|d| d.file_name()).expect("case folder").to_string_lossy().into_owned();
+        let mut wall: Vec<f64> = (0..11)
+            .map(|run| {
+                let out = root.join(format!("{name}-{run}"));
+                let t = Instant::now();
+                let status = Command::new(env!("CARGO_BIN_EXE_garmentcode"))
+                    .arg("mesh")
+                    .arg(spec)
+                    .arg("--out")
+                    .arg(&out)
+                    .stderr(std::process::Stdio::null())
+                    .status()
+                    .expect("garmentcode runs");
+                let elapsed = t.elapsed().as_secs_f64();
+                assert!(status.success(), "{name} meshes");
+                elapsed
+            })
+            .collect();
+        let mean_cpu = (children_ticks() - ticks) as f64 / 100.0 / wall.len() as f64;
+        let _ = std::fs::remove_dir_all(&root);
+        wall.sort_by(f64::total_cmp);
+        println!("{name}: {:.3} ms CPU (mean), {:.3} ms wall (median)", mean_cpu * 1e3, wall[wall.len() / 2] * 1e3);
+        per.push(wall[wall.len() / 2]);
+        cpu.push(mean_cpu);
+    }
+    let quantiles = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        let q = |f: f64| v[((v.len() - 1) as f64 * f).round() as usize];
+        (q(0.5), format!("median {:.3} ms, p99 {:.3} ms, worst {:.3} ms", q(0.5) * 1e3, q(0.99) * 1e3, q(1.0) * 1e3))
+    };
+    let ((cpu_median, cpu_text), (_, wall_text)) = (quantiles(&mut cpu), quantiles(&mut per));
+    println!("garmentcode mesh, whole process, per garment over {} cases: CPU {cpu_text}; wall {wall_text}", per.len());
+    println!("the reference: {REFERENCE_S} s of CPU per garment (median), x{:.0} at the median", REFERENCE_S / cpu_median);
+}
+
+/// CPU time (user and system) of this process's waited-for children, in ticks of 10 ms
+/// (`/proc/self/stat` fields 16 and 17; 0 where there is no `/proc`).
+fn children_ticks() -> u64 {
+    let stat = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
+    // Fields after the command name, which is in parentheses and may hold spaces.
+    let rest = stat.rsplit_once(')').map_or("", |(_, r)| r);
+    let fields: Vec<&str> = rest.split_whitespace().collect();
+    // rest starts at field 3 (state): cutime is field 16, cstime 17.
+    [13, 14].iter().filter_map(|&i| fields.get(i)?.parse::<u64>().ok()).sum()
+}
