@@ -144,7 +144,10 @@ fn a_body_file_may_give_a_few_measurements_over_a_built_in_body() {
     let o = run(&["build", "--body", "bad.yaml", "--out", "bad"], &dir);
     assert_eq!(code(&o), 2);
     let err = stderr(&o);
-    assert!(err.contains("bad.yaml: 2 problems\n  line 2: body.base: no built-in body `mean_femal` (did you mean `mean_female`?)"), "{err}");
+    assert!(
+        err.contains("bad.yaml: 2 problems\n  line 2: body.base: no built-in body `mean_femal` (did you mean `mean_female`?)"),
+        "{err}"
+    );
     assert!(err.contains("line 3: body.waist: 7000 cm is outside the plausible range"), "{err}");
     assert!(!dir.join("bad").exists());
 }
