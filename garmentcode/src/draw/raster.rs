@@ -18,7 +18,7 @@ use crate::math::Vec2;
 /// Most pixels of a PNG drawing: 25 million (5,000 × 5,000; 100 MB while drawn). A
 /// garment at the default 3 px per cm is under a megapixel; a larger drawing (a
 /// high `--dpi`, a pattern in odd units) is drawn at the highest resolution that
-/// fits, which [`fitted_px_per_cm`] gives and the PNG records in a text chunk.
+/// fits, which `fitted_px_per_cm` gives and the PNG records in a text chunk.
 pub const MAX_PNG_PIXELS: u64 = 25_000_000;
 
 /// The resolution a view box is drawn at: `asked`, or lower so that the image
