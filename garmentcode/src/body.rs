@@ -362,6 +362,8 @@ impl Body {
     /// - a measurement: a finite number within its plausible range
     ///   ([`Body::check_measurement`]); `null` leaves an optional one out.
     /// - `body_sample`: a string (the body mesh of a dataset sample).
+    /// - `units`: `cm` (the default) or `in`: the lengths given are in inches
+    ///   (angles stay in degrees); the body holds them in cm.
     /// - derived values (`_` names) are ignored: they are always recomputed.
     ///
     /// Every problem is listed, one line each; the body must then pass
@@ -388,12 +390,21 @@ impl Body {
                 other => problems.push(format!("{at}body.base: expected the name of a built-in body, got {}", other.describe())),
             }
         }
+        // `units: in`: lengths given in inches (angles stay degrees).
+        let mut inches = false;
+        for (at, _, value) in entries.iter().filter(|(_, name, _)| *name == "units") {
+            match value {
+                BodyValue::Text("cm") => inches = false,
+                BodyValue::Text("in") => inches = true,
+                other => problems.push(format!("{at}body.units: expected cm or in, got {}", other.describe())),
+            }
+        }
         let mut values: Vec<Option<f64>> = MEASUREMENTS.iter().map(|m| base.as_ref().and_then(|b| b.get(m.name))).collect();
         let mut given = vec![false; MEASUREMENTS.len()];
         let mut body_sample = base.as_ref().and_then(|b| b.body_sample.clone());
         for (at, name, value) in entries {
-            if *name == "base" || name.starts_with('_') {
-                continue; // the base is read above; derived values are always recomputed
+            if *name == "base" || *name == "units" || name.starts_with('_') {
+                continue; // read above; derived values are always recomputed
             }
             if *name == "body_sample" {
                 if let BodyValue::Text(s) = value {
@@ -408,10 +419,15 @@ impl Body {
             };
             given[i] = true;
             match value {
-                BodyValue::Number(x) => match Body::check_measurement(name, *x) {
-                    Ok(()) => values[i] = Some(*x),
-                    Err(e) => problems.push(format!("{at}body.{name}: {e}")),
-                },
+                BodyValue::Number(x) => {
+                    let in_inches = inches && MEASUREMENTS[i].unit == "cm";
+                    let cm = if in_inches { x * 2.54 } else { *x };
+                    match Body::check_measurement(name, cm) {
+                        Ok(()) => values[i] = Some(cm),
+                        Err(e) if in_inches => problems.push(format!("{at}body.{name}: {} in: {e}", short(*x))),
+                        Err(e) => problems.push(format!("{at}body.{name}: {e}")),
+                    }
+                }
                 BodyValue::Null if MEASUREMENTS[i].optional => values[i] = None,
                 other => problems.push(format!("{at}body.{name}: expected a number, got {}", other.describe())),
             }
@@ -647,6 +663,25 @@ mod tests {
         assert!(e.contains("body.height: missing measurement"), "{e}");
         let e = Body::from_yaml_with_bases("body:\n  base: 3\n", "p.yaml", &bases).unwrap_err().to_string();
         assert!(e.contains("body.base: expected the name of a built-in body, got 3"), "{e}");
+    }
+
+    #[test]
+    fn a_body_file_may_give_inches() {
+        let text = mean_female();
+        let bases = [("mean_female", text.as_str())];
+        let base = Body::from_yaml(&text, "f").unwrap();
+        let b = Body::from_yaml_with_bases("body:\n  base: mean_female\n  units: in\n  waist: 28\n  shoulder_incl: 20\n", "p.yaml", &bases)
+            .unwrap();
+        assert_eq!(b.waist, 28.0 * 2.54);
+        assert_eq!(b.height, base.height, "the base's measurements stay in cm");
+        assert_eq!(b.shoulder_incl, 20.0, "angles stay in degrees");
+        // A value out of range names what was given and what it is in cm.
+        let e = Body::from_yaml_with_bases("body:\n  base: mean_female\n  units: in\n  waist: 700\n", "p.yaml", &bases)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("line 4: body.waist: 700 in: 1778 cm is outside the plausible range"), "{e}");
+        let e = Body::from_yaml_with_bases("body:\n  base: mean_female\n  units: inch\n", "p.yaml", &bases).unwrap_err().to_string();
+        assert!(e.contains("line 3: body.units: expected cm or in, got \"inch\""), "{e}");
     }
 
     #[test]
