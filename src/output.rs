@@ -180,13 +180,18 @@ impl OutputSet {
                 continue;
             }
             let path = e.path();
-            let unchanged = match recorded.get(name.as_str()) {
-                Some(hash) => fs::read(&path).is_ok_and(|bytes| format!("{:016x}", fnv1a(&bytes)) == *hash),
-                None => false,
-            };
-            let is_input = fs::canonicalize(&path).is_ok_and(|p| self.inputs.contains(&p));
-            let same_bytes = || self.files.iter().any(|(n, b)| *n == name && fs::read(&path).is_ok_and(|old| old == *b));
-            if !unchanged && !is_input && !same_bytes() {
+            if fs::canonicalize(&path).is_ok_and(|p| self.inputs.contains(&p)) {
+                continue; // read by this run
+            }
+            // Read the file once, and only if it can be vouched for: by its hash in
+            // the manifest, or by being the bytes this run writes again.
+            let hash = recorded.get(name.as_str());
+            let new = self.files.iter().find(|(n, _)| *n == name).map(|(_, b)| b);
+            let same_length = new.is_some_and(|b| Some(b.len() as u64) == e.metadata().ok().map(|m| m.len()));
+            let vouched = (hash.is_some() || same_length)
+                && fs::read(&path)
+                    .is_ok_and(|old| hash.is_some_and(|h| format!("{:016x}", fnv1a(&old)) == *h) || new.is_some_and(|b| *b == old));
+            if !vouched {
                 edited.push(name);
             }
         }
