@@ -144,6 +144,25 @@ impl BodyMesh {
         BodyMesh::from_packed(bytes, name)
     }
 
+    /// The body mesh to drape on for a body: the built-in mesh when `name` is a built-in
+    /// body that has one ([`BUILTIN`]), else a mesh made from `measurements`.
+    ///
+    /// Today only the built-in meshes exist: any other body is refused with a pointer to
+    /// `--body-mesh` (a mannequin made from the measurements is issue 24's next step).
+    pub fn for_body(name: &str, measurements: &garmentcode::Body) -> Result<BodyMesh, BodyError> {
+        let _ = measurements;
+        if BUILTIN.iter().any(|(n, _)| *n == name) {
+            return BodyMesh::builtin(name);
+        }
+        Err(BodyError::Read {
+            file: name.to_string(),
+            reason: format!(
+                "no body mesh for this body (built in: {}); give one with --body-mesh FILE.obj",
+                BUILTIN.map(|(n, _)| n).join(", ")
+            ),
+        })
+    }
+
     /// The compact form of this body (for [`BUILTIN`]): magic `GCBODY1\0`, vertex and
     /// triangle counts (u32 LE), the vertices as differences from the previous vertex in
     /// units of 0.1 mm (i16 LE, x y z), the triangles (u16 LE corners when there are at most

@@ -29,7 +29,7 @@ mod selfcol;
 pub mod solver;
 
 pub use body::{BodyError, BodyMesh};
-pub use solver::{Attachment, Drape, DrapeError, Settings, Stats, drape};
+pub use solver::{Attachment, Drape, DrapeError, Next, Progress, Settings, Stats, drape, drape_with_progress};
 
 use garmentcode::Vec3;
 use garmentcode::mesh::BoxMesh;

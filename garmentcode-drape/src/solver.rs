@@ -433,8 +433,42 @@ impl Cloth {
     }
 }
 
+/// Where a running drape is, reported after every frame (see [`drape_with_progress`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Progress<'a> {
+    /// Frames simulated so far.
+    pub frame: usize,
+    /// The frame limit ([`Settings::max_frames`]).
+    pub max_frames: usize,
+    /// Vertices that moved more than the static threshold in this frame.
+    pub non_static_vertices: usize,
+    /// The garment's vertex positions after this frame (cm, box-mesh order).
+    pub positions: &'a [Vec3],
+}
+
+/// What the caller of [`drape_with_progress`] wants after a frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Next {
+    /// Go on simulating.
+    Continue,
+    /// Stop now: the drape is returned as it is, not converged.
+    Stop,
+}
+
 /// Drapes `mesh` on `body`: see the [module documentation](self).
 pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Drape, DrapeError> {
+    drape_with_progress(mesh, body, settings, |_| Next::Continue)
+}
+
+/// [`drape`], calling `on_frame` after every frame (for a progress bar, a live view, or to
+/// cancel). The positions are the same bytes as [`drape`]'s whatever `on_frame` does,
+/// unless it stops the run.
+pub fn drape_with_progress(
+    mesh: &BoxMesh,
+    body: &BodyMesh,
+    settings: &Settings,
+    mut on_frame: impl FnMut(&Progress) -> Next,
+) -> Result<Drape, DrapeError> {
     settings.check()?;
     let start = Instant::now();
     let dt = 1.0 / (settings.fps * settings.substeps as f64);
@@ -646,6 +680,10 @@ pub fn drape(mesh: &BoxMesh, body: &BodyMesh, settings: &Settings) -> Result<Dra
         // The static rule runs after the zero-gravity frames and the attachment frames.
         if frame >= settings.zero_gravity_frames && frame >= min_frames && is_static {
             converged = true;
+            break;
+        }
+        let progress = Progress { frame: frames, max_frames: settings.max_frames, non_static_vertices: non_static, positions: &x };
+        if on_frame(&progress) == Next::Stop {
             break;
         }
         prev.copy_from_slice(&x);
