@@ -281,6 +281,47 @@ derived_values! {
     waist_level "Height of the waist above the floor (height − head − waist line)." = |b| b.height - b.head_l - b.waist_line;
 }
 
+/// How a body file over a built-in body (`base:`) fills in what it does not give: each
+/// measurement on the left, when the file leaves it out but gives the one on the right,
+/// is the base's value scaled by the same ratio as that one (`given / base`). Lengths
+/// follow the height, the upper body's girths and widths the bust, the waist's back part
+/// the waist, and the lower body's the hips; angles and the driving measurements
+/// themselves stay the base's unless given.
+pub const PROPORTIONS: &[(&str, &str)] = &[
+    ("head_l", "height"),
+    ("waist_line", "height"),
+    ("waist_over_bust_line", "height"),
+    ("bust_line", "height"),
+    ("vert_bust_line", "height"),
+    ("arm_length", "height"),
+    ("armscye_depth", "height"),
+    ("hips_line", "height"),
+    ("crotch_hip_diff", "height"),
+    ("underbust", "bust"),
+    ("back_width", "bust"),
+    ("bust_points", "bust"),
+    ("shoulder_w", "bust"),
+    ("neck_w", "bust"),
+    ("wrist", "bust"),
+    ("waist_back_width", "waist"),
+    ("hip_back_width", "hips"),
+    ("leg_circ", "hips"),
+    ("bum_points", "hips"),
+];
+
+/// Plausible ratios between measurements (`a / b` within `[low, high]`), checked by
+/// [`Body::check_derived`]: each value may be in its own range and still not fit the
+/// others (a waist half as large again as the hips is a typing mistake).
+pub const RATIOS: &[(&str, &str, f64, f64)] = &[
+    ("waist", "hips", 0.5, 1.5),
+    ("bust", "hips", 0.55, 1.6),
+    ("bust", "waist", 0.6, 2.2),
+    ("underbust", "bust", 0.6, 1.1),
+    ("shoulder_w", "bust", 0.2, 0.6),
+    ("arm_length", "height", 0.2, 0.6),
+    ("head_l", "height", 0.08, 0.25),
+];
+
 /// One value of a body mapping, as a body file, a request or a Python dict
 /// gives it: the input of [`Body::from_entries`].
 #[derive(Clone, Debug, PartialEq)]
@@ -399,7 +440,8 @@ impl Body {
                 other => problems.push(format!("{at}body.units: expected cm or in, got {}", other.describe())),
             }
         }
-        let mut values: Vec<Option<f64>> = MEASUREMENTS.iter().map(|m| base.as_ref().and_then(|b| b.get(m.name))).collect();
+        let base_values: Vec<Option<f64>> = MEASUREMENTS.iter().map(|m| base.as_ref().and_then(|b| b.get(m.name))).collect();
+        let mut values = base_values.clone();
         let mut given = vec![false; MEASUREMENTS.len()];
         let mut body_sample = base.as_ref().and_then(|b| b.body_sample.clone());
         for (at, name, value) in entries {
@@ -435,13 +477,21 @@ impl Body {
         // A base that cannot be read is the one problem: the measurements it would
         // have given are not missing.
         let has_base = entries.iter().any(|(_, name, _)| *name == "base");
-        for ((m, value), given) in MEASUREMENTS.iter().zip(&values).zip(given) {
+        for ((m, value), &given) in MEASUREMENTS.iter().zip(&values).zip(&given) {
             if value.is_none() && !m.optional && !given && !has_base {
                 problems.push(format!("body.{}: missing measurement ({})", m.name, m.description));
             }
         }
         if !problems.is_empty() {
             return Err(problems);
+        }
+        // Over a base, a measurement not given follows the one it is in proportion to.
+        for &(name, driver) in PROPORTIONS {
+            let index = |n: &str| MEASUREMENTS.iter().position(|m| m.name == n).expect("PROPORTIONS names measurements");
+            let (i, d) = (index(name), index(driver));
+            if let (false, true, Some(value), Some(from), Some(to)) = (given[i], given[d], values[i], base_values[d], values[d]) {
+                values[i] = Some(value * to / from);
+            }
         }
         let body = Body::from_values(&values, body_sample);
         body.check_derived()?;
@@ -470,6 +520,17 @@ impl Body {
             let (p, w) = (self.get(part).unwrap_or(0.0), self.get(whole).unwrap_or(0.0));
             if p >= w {
                 problems.push(format!("{part} ({p}) must be smaller than {whole} ({w}), of which it is the back part"));
+            }
+        }
+        for &(a, b, low, high) in RATIOS {
+            let (Some(x), Some(y)) = (self.get(a), self.get(b)) else { continue };
+            let ratio = x / y;
+            if !(low..=high).contains(&ratio) {
+                problems.push(format!(
+                    "{a} ({}) is {ratio:.2} × {b} ({}): implausible together (a body's {a}/{b} is within {low}..{high}); check both values",
+                    short(x),
+                    short(y)
+                ));
             }
         }
         if problems.is_empty() { Ok(()) } else { Err(problems) }
@@ -682,6 +743,43 @@ mod tests {
         assert!(e.contains("line 4: body.waist: 700 in: 1778 cm is outside the plausible range"), "{e}");
         let e = Body::from_yaml_with_bases("body:\n  base: mean_female\n  units: inch\n", "p.yaml", &bases).unwrap_err().to_string();
         assert!(e.contains("line 3: body.units: expected cm or in, got \"inch\""), "{e}");
+    }
+
+    #[test]
+    fn measurements_left_out_follow_the_given_ones_in_proportion() {
+        let text = mean_female();
+        let bases = [("mean_female", text.as_str())];
+        let base = Body::from_yaml(&text, "f").unwrap();
+        let b = Body::from_yaml_with_bases(
+            "body:\n  base: mean_female\n  height: 180\n  bust: 88\n  hips: 110\n  hip_back_width: 50\n",
+            "p.yaml",
+            &bases,
+        )
+        .unwrap();
+        let close = |a: f64, b: f64| (a - b).abs() < 1e-9;
+        assert!(close(b.arm_length, base.arm_length * 180.0 / base.height));
+        assert!(close(b.waist_line, base.waist_line * 180.0 / base.height));
+        assert!(close(b.underbust, base.underbust * 88.0 / base.bust));
+        assert!(close(b.back_width, base.back_width * 88.0 / base.bust));
+        assert!(close(b.leg_circ, base.leg_circ * 110.0 / base.hips));
+        assert_eq!(b.hip_back_width, 50.0, "a measurement given is kept");
+        assert_eq!(b.waist, base.waist, "the waist was not given");
+        assert_eq!(b.waist_back_width, base.waist_back_width, "nor what follows it");
+        assert_eq!(b.shoulder_incl, base.shoulder_incl, "angles stay");
+        // Every proportion names a measurement and its driver.
+        for (m, d) in PROPORTIONS {
+            assert!(Body::measurement(m).is_some() && Body::measurement(d).is_some(), "{m} {d}");
+        }
+    }
+
+    #[test]
+    fn measurements_that_do_not_fit_together_are_named() {
+        let text = mean_female();
+        let bases = [("mean_female", text.as_str())];
+        let e = Body::from_yaml_with_bases("body:\n  base: mean_female\n  waist: 160\n  hips: 100\n", "p.yaml", &bases)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("waist (160) is 1.60 × hips (100): implausible together (a body's waist/hips is within 0.5..1.5)"), "{e}");
     }
 
     #[test]

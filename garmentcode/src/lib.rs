@@ -82,7 +82,7 @@ pub mod parity;
 pub use arc::SvgArc;
 pub use arena::{Arena, EdgeId, EdgeSeq, InterfaceId, PanelId, Ruffle, StitchRule, VertexId};
 pub use bezier::Bezier;
-pub use body::{Body, BodyError, BodyValue, DERIVED_VALUES, Derived, DerivedValue, MEASUREMENTS, Measurement};
+pub use body::{Body, BodyError, BodyValue, DERIVED_VALUES, Derived, DerivedValue, MEASUREMENTS, Measurement, PROPORTIONS, RATIOS};
 pub use component::{Align, Component, Interfaces, Node, PanelPart, Part, PartExt, Parts, Slot, SlotExt, assemble};
 pub use edge::{Curve, Edge, Segment};
 pub use error::{Error, Result};
