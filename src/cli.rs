@@ -448,9 +448,15 @@ pub struct MeshArgs {
 /// `garmentcode print`.
 #[derive(Args, Debug)]
 pub struct PrintArgs {
-    /// The pattern (specification.json).
-    #[arg(value_name = "SPEC.json")]
+    /// The pattern (specification.json); with --sizes or --size-chart, the design (a design file or a built-in design) built on each size.
+    #[arg(value_name = "SPEC.json|DESIGN")]
     pub file: String,
+    /// A size run: the design built on each of these bodies (built-in names or body files), printed nested.
+    #[arg(long, value_name = "BODY,BODY,...", value_delimiter = ',', num_args = 1.., conflicts_with = "size_chart")]
+    pub sizes: Vec<String>,
+    /// A size run from a size chart file (sizes by a few measurements over a built-in body; see the README).
+    #[arg(long, value_name = "FILE.yaml")]
+    pub size_chart: Option<String>,
     /// Output folder.
     #[arg(short, long, value_name = "DIR")]
     pub out: PathBuf,
@@ -473,7 +479,7 @@ pub struct PrintArgs {
     /// Garment name on the labels (default: from the specification's file or folder name).
     #[arg(long)]
     pub garment: Option<String>,
-    /// Size on the labels, e.g. the body's name.
+    /// Size on the labels, e.g. the body's name (a size run names each size by its body or chart entry).
     #[arg(long, default_value = "unspecified")]
     pub size: String,
     /// Replace an output folder that holds files garmentcode did not write.

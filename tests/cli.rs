@@ -780,3 +780,76 @@ fn bash_completion_offers_built_in_names_and_files() {
     let fish = stdout(&run(&["completions", "fish"], &dir));
     assert!(fish.contains("-l design") && fish.contains("-r -F -a \"t-shirt"));
 }
+
+#[test]
+fn a_size_run_prints_every_size_nested_and_names_the_sizes_it_leaves_out() {
+    let dir = scratch("size_run");
+    let chart = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/size-charts/en13402-women-168.yaml");
+    let o = run(&["print", "t-shirt", "--size-chart", chart.to_str().unwrap(), "--out", "run"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    for n in ["pattern-tiled.pdf", "pattern-sheet.pdf", "pattern-sheet.svg", "pattern.dxf", "size-run.txt"] {
+        assert!(dir.join("run").join(n).is_file(), "{n} missing");
+    }
+    let sizes = ["80", "84", "88", "92", "96"];
+    let dxf_text = std::fs::read_to_string(dir.join("run/pattern.dxf")).unwrap();
+    let dxf = garmentcode::fabricate::read_dxf(&dxf_text).unwrap();
+    // One block per piece and size, each with its Size: field, all sizes of a piece
+    // inserted at one point (nested).
+    assert_eq!(dxf.blocks.len(), 4 * sizes.len());
+    for b in &dxf.blocks {
+        let size = b.name.rsplit('_').next().unwrap();
+        assert!(sizes.contains(&size), "{}", b.name);
+        assert!(b.entities.iter().any(|e| e.kind == "TEXT" && e.text == format!("Size: {size}")), "{}", b.name);
+    }
+    let inserts: Vec<_> = dxf.entities.iter().filter(|e| e.kind == "INSERT").collect();
+    assert_eq!(inserts.len(), dxf.blocks.len());
+    for piece in inserts.chunks(sizes.len()) {
+        assert!(piece.iter().all(|i| i.points == piece[0].points), "the sizes of a piece are nested");
+    }
+    assert!(dxf.entities.iter().any(|e| e.kind == "TEXT" && e.text == "Size List: 80 84 88 92 96"));
+    // Bigger sizes cut bigger pieces.
+    let width = |name: &str| {
+        let b = dxf.blocks.iter().find(|b| b.name == name).unwrap();
+        let cut = b.entities.iter().find(|e| e.kind == "POLYLINE" && e.layer == "1").unwrap();
+        let xs = cut.points.iter().map(|p| p.x);
+        xs.clone().fold(f64::MIN, f64::max) - xs.fold(f64::MAX, f64::min)
+    };
+    assert!(width("right_ftorso_96") > width("right_ftorso_88") && width("right_ftorso_88") > width("right_ftorso_80"));
+    let svg = std::fs::read_to_string(dir.join("run/pattern-sheet.svg")).unwrap();
+    assert!(svg.contains(">size 80</text>") && svg.contains("Sizes: 80, 84, 88, 92, 96"), "a legend and the sizes on the labels");
+    // ezdxf reads it, with every size's blocks (as in garmentcode's own DXF test; SKIPPED without ezdxf).
+    let python = std::env::var("GARMENTCODE_EZDXF_PYTHON").unwrap_or_else(|_| "python3".into());
+    let script = "import sys, ezdxf\ndoc = ezdxf.readfile(sys.argv[1])\nprint(len(doc.audit().errors), sorted({t.dxf.text for b in doc.blocks for t in b if t.dxftype() == 'TEXT' and t.dxf.text.startswith('Size:')}))";
+    match std::process::Command::new(&python).arg("-c").arg(script).arg(dir.join("run/pattern.dxf")).output() {
+        Ok(o) if o.status.success() => {
+            assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), "0 ['Size: 80', 'Size: 84', 'Size: 88', 'Size: 92', 'Size: 96']")
+        }
+        Ok(o) if String::from_utf8_lossy(&o.stderr).contains("No module named 'ezdxf'") => {
+            eprintln!("SKIPPED the ezdxf read-back of a size run: Python's ezdxf is not installed (pip install ezdxf)")
+        }
+        Ok(o) => panic!("ezdxf failed: {}", String::from_utf8_lossy(&o.stderr)),
+        Err(e) => eprintln!("SKIPPED the ezdxf read-back of a size run: {python} cannot run ({e})"),
+    }
+    // A size whose design fails is named with the reason; the others are written.
+    std::fs::write(dir.join("tiny.yaml"), "body:\n  base: mean_female\n  height: 82\n").unwrap();
+    let o = run(&["print", "jumpsuit", "--sizes", "mean_female,tiny.yaml,mean_male", "--out", "j"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(stderr(&o).contains("warning: size tiny: left out: too long"), "{}", stderr(&o));
+    let report = std::fs::read_to_string(dir.join("j/size-run.txt")).unwrap();
+    assert!(
+        report.contains("mean_female: printed") && report.contains("tiny: left out: too long") && report.contains("mean_male: printed"),
+        "{report}"
+    );
+    let dxf = garmentcode::fabricate::read_dxf(&std::fs::read_to_string(dir.join("j/pattern.dxf")).unwrap()).unwrap();
+    assert!(dxf.blocks.iter().all(|b| !b.name.ends_with("_tiny")));
+    // Nothing built: refused, nothing written. A specification is not a design.
+    let o = run(&["print", "jumpsuit", "--sizes", "tiny.yaml", "--out", "none"], &dir);
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+    assert!(!dir.join("none").exists());
+    let spec = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/cases/t-shirt-mean_all/specification.json");
+    let o = run(&["print", spec.to_str().unwrap(), "--sizes", "mean_all", "--out", "none"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("a size run builds the design on every size"), "{}", stderr(&o));
+    let o = run(&["print", "t-shirt", "--sizes", "mean_all", "--size-chart", "x.yaml", "--out", "none"], &dir);
+    assert_eq!(code(&o), 2, "--sizes and --size-chart exclude each other");
+}

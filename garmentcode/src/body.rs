@@ -322,6 +322,28 @@ pub const RATIOS: &[(&str, &str, f64, f64)] = &[
     ("head_l", "height", 0.08, 0.25),
 ];
 
+/// The entries of a body mapping read from YAML (see [`Body::from_entries`]), each
+/// prefixed with its line, and the problems of keys that are not names.
+pub(crate) fn yaml_entries(pairs: &[(Node, Node)]) -> (Vec<(String, &str, BodyValue<'_>)>, Vec<String>) {
+    let mut problems = Vec::new();
+    let mut entries = Vec::with_capacity(pairs.len());
+    for (k, v) in pairs {
+        let at = format!("line {}: ", k.line);
+        let Some(name) = k.as_str() else {
+            problems.push(format!("{at}measurement names must be strings"));
+            continue;
+        };
+        let value = match (&v.value, v.as_f64()) {
+            (_, Some(x)) => BodyValue::Number(x),
+            (Y::Str(s), _) => BodyValue::Text(s),
+            (Y::Null, _) => BodyValue::Null,
+            (other, _) => BodyValue::Other(other.type_name().to_string()),
+        };
+        entries.push((at, name, value));
+    }
+    (entries, problems)
+}
+
 /// One value of a body mapping, as a body file, a request or a Python dict
 /// gives it: the input of [`Body::from_entries`].
 #[derive(Clone, Debug, PartialEq)]
@@ -366,22 +388,7 @@ impl Body {
         let doc = yaml::parse(text).map_err(|e| fail(e.to_string()))?;
         let body = doc.get("body").ok_or_else(|| fail("expected a top-level `body:` mapping of measurements".into()))?;
         let pairs = body.as_map().ok_or_else(|| fail("`body` must be a mapping of measurements".into()))?;
-        let mut problems = Vec::new();
-        let mut entries = Vec::with_capacity(pairs.len());
-        for (k, v) in pairs {
-            let at = format!("line {}: ", k.line);
-            let Some(name) = k.as_str() else {
-                problems.push(format!("{at}measurement names must be strings"));
-                continue;
-            };
-            let value = match (&v.value, v.as_f64()) {
-                (_, Some(x)) => BodyValue::Number(x),
-                (Y::Str(s), _) => BodyValue::Text(s),
-                (Y::Null, _) => BodyValue::Null,
-                (other, _) => BodyValue::Other(other.type_name().to_string()),
-            };
-            entries.push((at, name, value));
-        }
+        let (entries, mut problems) = yaml_entries(pairs);
         match Body::from_entries(&entries, bases) {
             Ok(body) if problems.is_empty() => Ok(body),
             Ok(_) => Err(BodyError { file: file.to_string(), problems }),

@@ -56,6 +56,7 @@ mod pattern;
 mod remap;
 mod rotation;
 mod seq;
+mod size_chart;
 mod stitch;
 #[cfg(test)]
 mod test_data;
@@ -96,6 +97,7 @@ pub use pattern::validate::{Problem, ProblemKind, Severity, structural_errors, v
 pub use pattern::{Curvature, EdgeSpec, PanelSpec, Pattern, Properties, StitchSide, StitchSpec};
 pub use remap::{IdMap, Remap};
 pub use rotation::Rotation;
+pub use size_chart::{MAX_SIZES, SizeChart};
 pub use stitch::StitchRecord;
 
 /// 2D point or vector (panel-local coordinates, centimetres).

@@ -1,13 +1,19 @@
 //! `garmentcode print SPEC.json --out DIR [--paper ...] [--seam CM] [--hem CM]
 //! [--seam-edge PANEL[:EDGE]=CM]... [--fabric-width CM]`: the pattern as pieces to
-//! print, cut and sew (see `garmentcode::fabricate`).
+//! print, cut and sew (see `garmentcode::fabricate`). With `--sizes BODY,...` or
+//! `--size-chart FILE.yaml` the argument is a design, built on every size and
+//! printed nested (`garmentcode::fabricate::size_run_files`).
 
 use crate::cli::PrintArgs;
-use crate::commands::{CliError, read_pattern, write_folder};
+use crate::commands::{CliError, load_body, load_design, read_pattern, write_folder};
 use crate::output::OutputSet;
-use garmentcode::fabricate::{PrintOptions, files};
+use garmentcode::fabricate::{PrintOptions, files, size_run_files};
+use std::path::Path;
 
 pub fn run(args: PrintArgs) -> Result<i32, CliError> {
+    if !args.sizes.is_empty() || args.size_chart.is_some() {
+        return size_run(args);
+    }
     let file = &args.file;
     let pattern = read_pattern(file)?;
     for o in &args.seam_edges {
@@ -39,4 +45,88 @@ pub fn run(args: PrintArgs) -> Result<i32, CliError> {
     write_folder(&set, &args.out, args.force)?;
     eprintln!("wrote {} ({} panels)", args.out.display(), pattern.panels.len());
     Ok(0)
+}
+
+/// `print DESIGN --sizes ...|--size-chart ...`: the design on every size, nested. A
+/// size whose design fails (cannot be built, or fails a validity check) is named
+/// with the reason and left out; the others are written, with `size-run.txt`
+/// saying which is which.
+fn size_run(args: PrintArgs) -> Result<i32, CliError> {
+    let file = &args.file;
+    if file.ends_with(".json") {
+        return Err(CliError::Usage(format!(
+            "{file}: a size run builds the design on every size: give a design file (.yaml) or a built-in design, not a specification (a specification is built for one body)"
+        )));
+    }
+    let (design, design_label) = load_design(file)?;
+    let mut sizes: Vec<(String, garmentcode::Body)> = Vec::new();
+    let mut from = String::new();
+    if let Some(chart) = &args.size_chart {
+        let text = crate::commands::read_text(chart).map_err(|e| CliError::Input(format!("{chart}: cannot read: {e}")))?;
+        let c = garmentcode::SizeChart::from_yaml(&text, chart, garments::builtin::BODIES).map_err(|e| CliError::Input(e.to_string()))?;
+        from = format!("size chart {} ({chart})", c.name);
+        sizes = c.sizes;
+    }
+    for body in &args.sizes {
+        let (b, _) = load_body(body)?;
+        let name = Path::new(body).file_stem().map_or_else(|| body.clone(), |s| s.to_string_lossy().into_owned());
+        if sizes.iter().any(|(n, _)| *n == name) {
+            return Err(CliError::Usage(format!("--sizes: size {name} is listed twice")));
+        }
+        sizes.push((name, b));
+    }
+    if sizes.len() > garmentcode::MAX_SIZES {
+        return Err(CliError::Usage(format!("--sizes: {} sizes; a size run has at most {}", sizes.len(), garmentcode::MAX_SIZES)));
+    }
+    let garment = args.garment.clone().unwrap_or_else(|| design_label.chars().take(garmentcode::io::MAX_NAME_CHARS).collect());
+    let mut built = Vec::new();
+    let mut report = format!("Size run of {design_label}{}\n", if from.is_empty() { String::new() } else { format!(" from the {from}") });
+    for (name, body) in &sizes {
+        let figures = format!("height {}, bust {}, waist {}, hips {}", cm(body.height), cm(body.bust), cm(body.waist), cm(body.hips));
+        let failure = match garments::build::build(&design, body, &garment) {
+            Err(e) => Some(e.to_string()),
+            Ok(b) => {
+                let warnings = b.checks.warnings();
+                if warnings.is_empty() {
+                    built.push((name.clone(), b.pattern));
+                    None
+                } else {
+                    Some(warnings.iter().map(|w| crate::explain_warning(w)).collect::<Vec<_>>().join("; "))
+                }
+            }
+        };
+        match failure {
+            None => report.push_str(&format!("  {name}: printed ({figures})\n")),
+            Some(reason) => {
+                eprintln!("warning: size {name}: left out: {reason}");
+                report.push_str(&format!("  {name}: left out: {reason} ({figures})\n"));
+            }
+        }
+    }
+    if built.is_empty() {
+        return Err(CliError::Rejected(format!("{design_label}: no size could be built (see the warnings above); nothing written")));
+    }
+    let opts = PrintOptions {
+        seam: args.seam,
+        hem: args.hem,
+        edge_seams: args.seam_edges.clone(),
+        paper: args.paper,
+        fabric_width: args.fabric_width,
+        garment,
+        size: String::new(),
+    };
+    let mut set = OutputSet::default();
+    for (name, bytes) in size_run_files(&built, &opts).map_err(|e| CliError::Input(format!("{design_label}: {e}")))? {
+        set.add(&name, bytes);
+    }
+    set.add("size-run.txt", report.into_bytes());
+    set.add_input(file);
+    write_folder(&set, &args.out, args.force)?;
+    eprintln!("wrote {}: {} of {} sizes nested ({design_label})", args.out.display(), built.len(), sizes.len());
+    Ok(0)
+}
+
+/// A measurement in the report: cm with one decimal.
+fn cm(x: f64) -> String {
+    format!("{x:.1} cm")
 }

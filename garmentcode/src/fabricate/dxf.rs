@@ -69,8 +69,35 @@ impl W {
 
 /// The pieces as a DXF-AAMA file, inserted where the one-sheet drawing puts them.
 pub fn write(pieces: &[Piece], sheet: &Sheet, opts: &PrintOptions) -> String {
+    let blocks: Vec<Block> = sheet
+        .placed
+        .iter()
+        .map(|pl| {
+            let piece = &pieces[pl.piece];
+            Block { piece, name: block_name(&piece.name), size: &opts.size, at: pl.xf.t }
+        })
+        .collect();
+    write_blocks(&blocks, &opts.garment, &[])
+}
+
+/// One block of a DXF-AAMA file: a piece of one size, and where it is inserted.
+pub(crate) struct Block<'a> {
+    /// The piece.
+    pub piece: &'a Piece,
+    /// The block's name.
+    pub name: String,
+    /// Its `Size:` field.
+    pub size: &'a str,
+    /// The sheet offset of the piece's frame (cm, y down).
+    pub at: Vec2,
+}
+
+/// A DXF-AAMA file of `blocks` (each defined, then inserted, in this order) for the
+/// style `garment`, with `notes` as text lines on layer 1 above the drawing (a size
+/// run's size list).
+pub(crate) fn write_blocks(blocks: &[Block], garment: &str, notes: &[String]) -> String {
     let mut w = W(String::new());
-    let all: Vec<Vec2> = sheet.placed.iter().flat_map(|pl| pieces[pl.piece].cut_line.iter().map(|p| insert_point(pl.xf.t) + *p)).collect();
+    let all: Vec<Vec2> = blocks.iter().flat_map(|b| b.piece.cut_line.iter().map(|p| insert_point(b.at) + *p)).collect();
     let ext = super::geom::Rect::of(all);
     w.pair(0, "SECTION");
     w.pair(2, "HEADER");
@@ -108,14 +135,14 @@ pub fn write(pieces: &[Piece], sheet: &Sheet, opts: &PrintOptions) -> String {
     w.pair(0, "ENDSEC");
     w.pair(0, "SECTION");
     w.pair(2, "BLOCKS");
-    for p in pieces {
-        let name = block_name(&p.name);
+    for b in blocks {
+        let p = b.piece;
         w.pair(0, "BLOCK");
         w.pair(8, "1");
-        w.pair(2, &name);
+        w.pair(2, &b.name);
         w.pair(70, "0");
         w.xy(10, Vec2::ZERO);
-        w.pair(3, &name);
+        w.pair(3, &b.name);
         w.polyline("1", &p.cut_line, true);
         w.polyline("14", &p.sew, true);
         for n in &p.notches {
@@ -131,8 +158,8 @@ pub fn write(pieces: &[Piece], sheet: &Sheet, opts: &PrintOptions) -> String {
         let h = p.text_size;
         let texts = [
             format!("Piece Name: {}", p.name),
-            format!("Style Name: {}", opts.garment),
-            format!("Size: {}", opts.size),
+            format!("Style Name: {garment}"),
+            format!("Size: {}", b.size),
             format!(
                 "Quantity: {}",
                 match p.cut {
@@ -151,11 +178,14 @@ pub fn write(pieces: &[Piece], sheet: &Sheet, opts: &PrintOptions) -> String {
     w.pair(0, "ENDSEC");
     w.pair(0, "SECTION");
     w.pair(2, "ENTITIES");
-    for pl in &sheet.placed {
+    for (k, note) in notes.iter().enumerate() {
+        w.text("1", Vec2::new(ext.min.x, ext.max.y + 2.0 + 1.5 * (notes.len() - 1 - k) as f64), 1.0, note);
+    }
+    for b in blocks {
         w.pair(0, "INSERT");
         w.pair(8, "1");
-        w.pair(2, &block_name(&pieces[pl.piece].name));
-        w.xy(10, insert_point(pl.xf.t));
+        w.pair(2, &b.name);
+        w.xy(10, insert_point(b.at));
     }
     w.pair(0, "ENDSEC");
     w.pair(0, "EOF");

@@ -15,6 +15,11 @@
 //! - `cutting-layout.svg` and `cutting-layout.txt`: the pieces on a fabric width,
 //!   each as many times as it is cut, and the length of fabric needed.
 //!
+//! [`size_run_files`] prints one design in several sizes nested: every piece's
+//! outlines for all sizes on one sheet, each size in its own pen (see its module
+//! for the grade reference point), the tiled PDF, and a DXF-AAMA file with one
+//! block per piece and size.
+//!
 //! # The pieces
 //!
 //! **Frame.** Each piece is turned so that its grain runs up the page: the grain is
@@ -75,6 +80,7 @@
 
 pub mod dxf;
 pub mod geom;
+mod grade;
 mod pdf;
 mod piece;
 pub mod sheet;
@@ -85,6 +91,7 @@ mod types;
 mod tests;
 
 pub use dxf::{DxfBlock, DxfDrawing, DxfEntity, read_dxf};
+pub use grade::{SIZE_RUN_FILE_NAMES, size_run_files};
 pub use piece::{CURVE_STEP, GATHER_RATIO, MATCH_SPACING, NOTCH_LENGTH, stitch_fractions};
 
 pub use types::{Cut, EdgeSeam, Notch, Paper, Piece, PrintOptions};

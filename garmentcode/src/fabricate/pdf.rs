@@ -2,7 +2,7 @@
 //! home-printer pages behind a cover page.
 
 use super::geom::Rect;
-use super::sheet::{self, OVERLAP, PAGE_MARGIN, Prim, Sheet, Style, Tile};
+use super::sheet::{self, OVERLAP, PAGE_MARGIN, Prim, SIZE_PENS, Sheet, Style, Tile};
 use super::types::{Piece, PrintOptions};
 use crate::math::Vec2;
 use pdf_writer::{Content, Name, Pdf, Rect as PdfRect, Ref, Str};
@@ -50,6 +50,13 @@ fn pen(c: &mut Content, style: Style) {
         Style::Fold => (1.0, [0.1, 0.31, 0.63], &[]),
         Style::Internal => (0.5, [0.33; 3], &[]),
         Style::Frame | Style::Text => (0.8, [0.0; 3], &[]),
+        Style::Size(k) => {
+            let (rgb, dash) = SIZE_PENS[k as usize % SIZE_PENS.len()];
+            c.set_line_width(1.0);
+            c.set_stroke_rgb(rgb[0], rgb[1], rgb[2]);
+            c.set_dash_pattern(dash.iter().map(|d| (d * PT) as f32), 0.0);
+            return;
+        }
     };
     c.set_line_width(w);
     c.set_stroke_rgb(rgb[0], rgb[1], rgb[2]);

@@ -35,6 +35,30 @@ pub enum Style {
     Frame,
     /// Text.
     Text,
+    /// The cut line and notches of one size of a size run: its index into
+    /// [`SIZE_PENS`] (taken in turn).
+    Size(u8),
+}
+
+/// The pens of a size run's sizes, in turn: colour (RGB, 0 to 1) and dash pattern
+/// (dash and gap lengths in cm; empty for a solid line). Colour and dash both differ
+/// from one size to the next, so that a black-and-white print still tells them apart.
+pub const SIZE_PENS: [([f32; 3], &[f64]); 8] = [
+    ([0.0, 0.0, 0.0], &[]),
+    ([0.8, 0.1, 0.1], &[0.6, 0.25]),
+    ([0.1, 0.35, 0.8], &[0.15, 0.15]),
+    ([0.1, 0.55, 0.2], &[0.6, 0.2, 0.15, 0.2]),
+    ([0.55, 0.25, 0.7], &[1.2, 0.3]),
+    ([0.85, 0.5, 0.0], &[0.3, 0.3]),
+    ([0.0, 0.55, 0.6], &[0.6, 0.15, 0.15, 0.15, 0.15, 0.15]),
+    ([0.5, 0.35, 0.15], &[]),
+];
+
+impl Style {
+    /// The pen of the `k`-th size of a size run.
+    pub fn size(k: usize) -> Style {
+        Style::Size((k % SIZE_PENS.len()) as u8)
+    }
 }
 
 /// One thing drawn on the sheet (coordinates in cm, y down, origin top left).
@@ -124,7 +148,7 @@ pub fn shelf_pack(sizes: &[Vec2], width: f64, gap: f64) -> (Vec<Vec2>, f64) {
 }
 
 /// Map of a piece frame (y up) onto the page (y down) with the cut line's box at `corner`.
-fn frame_to_page(p: &Piece, corner: Vec2) -> Xf {
+pub(super) fn frame_to_page(p: &Piece, corner: Vec2) -> Xf {
     let b = Rect::of(p.cut_line.iter().copied());
     Xf { cols: [Vec2::X, Vec2::new(0.0, -1.0)], t: Vec2::new(corner.x - b.min.x, corner.y + b.max.y) }
 }
@@ -183,7 +207,7 @@ pub fn piece_prims(p: &Piece, xf: &Xf) -> Vec<Prim> {
 
 /// The title block (pattern name, size, allowances, cut list) and the scale boxes,
 /// drawn with their top-left corner at `at`; returns the drawing and its size.
-fn title_block(pieces: &[Piece], opts: &PrintOptions, at: Vec2) -> (Vec<Prim>, Vec2) {
+pub(super) fn title_block(pieces: &[Piece], opts: &PrintOptions, at: Vec2) -> (Vec<Prim>, Vec2) {
     let mut lines = vec![
         format!("{} - size {}", opts.garment, opts.size),
         format!("Seam allowance {} cm included{}", opts.seam, opts.hem.map(|h| format!(", hems {h} cm")).unwrap_or_default()),

@@ -1,7 +1,7 @@
 //! SVG of the one-sheet drawing and of the cutting layout (sizes in cm).
 
 use super::geom::Rect;
-use super::sheet::{CuttingLayout, Prim, Sheet, Style};
+use super::sheet::{CuttingLayout, Prim, SIZE_PENS, Sheet, Style};
 use super::types::{Piece, PrintOptions};
 use crate::math::Vec2;
 use std::fmt::Write;
@@ -22,15 +22,25 @@ fn escape(s: &str) -> String {
 }
 
 /// Stroke attributes of a style.
-fn stroke(style: Style) -> &'static str {
+fn stroke(style: Style) -> String {
     match style {
-        Style::Cut => r##"stroke="#000" stroke-width="0.06""##,
-        Style::Sew => r##"stroke="#555" stroke-width="0.03" stroke-dasharray="0.4 0.2""##,
-        Style::Notch => r##"stroke="#000" stroke-width="0.05""##,
-        Style::Grain => r##"stroke="#000" stroke-width="0.04""##,
-        Style::Fold => r##"stroke="#1a4fa0" stroke-width="0.05""##,
-        Style::Internal => r##"stroke="#555" stroke-width="0.03""##,
-        Style::Frame | Style::Text => r##"stroke="#000" stroke-width="0.04""##,
+        Style::Cut => r##"stroke="#000" stroke-width="0.06""##.into(),
+        Style::Sew => r##"stroke="#555" stroke-width="0.03" stroke-dasharray="0.4 0.2""##.into(),
+        Style::Notch => r##"stroke="#000" stroke-width="0.05""##.into(),
+        Style::Grain => r##"stroke="#000" stroke-width="0.04""##.into(),
+        Style::Fold => r##"stroke="#1a4fa0" stroke-width="0.05""##.into(),
+        Style::Internal => r##"stroke="#555" stroke-width="0.03""##.into(),
+        Style::Frame | Style::Text => r##"stroke="#000" stroke-width="0.04""##.into(),
+        Style::Size(k) => {
+            let (rgb, dash) = SIZE_PENS[k as usize % SIZE_PENS.len()];
+            let [r, g, b] = rgb.map(|c| (c * 255.0).round() as u8);
+            let dash = if dash.is_empty() {
+                String::new()
+            } else {
+                format!(r#" stroke-dasharray="{}""#, dash.iter().map(|d| num(*d)).collect::<Vec<_>>().join(" "))
+            };
+            format!(r##"stroke="#{r:02x}{g:02x}{b:02x}" stroke-width="0.05"{dash}"##)
+        }
     }
 }
 
