@@ -44,6 +44,8 @@ pub enum Command {
     /// Run the web configurator (a page with a control for every parameter, and its JSON API).
     #[command(long_about = SERVE_ABOUT)]
     Serve(ServeArgs),
+    /// Write the measuring guide: how to take every body measurement, with a figure of where the tape goes.
+    Guide(GuideArgs),
     /// Print a shell completion script (e.g. `garmentcode completions bash > ~/.local/share/bash-completion/completions/garmentcode`).
     Completions(CompletionsArgs),
 }
@@ -482,6 +484,20 @@ pub struct PrintArgs {
     /// Size on the labels, e.g. the body's name (a size run names each size by its body or chart entry).
     #[arg(long, default_value = "unspecified")]
     pub size: String,
+    /// Replace an output folder that holds files garmentcode did not write.
+    #[arg(short, long)]
+    pub force: bool,
+}
+
+/// `garmentcode guide`.
+#[derive(Args, Debug)]
+pub struct GuideArgs {
+    /// Output folder: measuring-guide.html (printable) and one figure per measurement (figure-NAME.svg).
+    #[arg(short, long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// Body the figures are drawn on: a body file (.yaml) or a built-in body.
+    #[arg(short, long, value_name = "NAME|FILE.yaml", default_value = garments::builtin::DEFAULT_BODY, value_parser = body_arg(), hide_possible_values = true)]
+    pub body: String,
     /// Replace an output folder that holds files garmentcode did not write.
     #[arg(short, long)]
     pub force: bool,

@@ -22,6 +22,7 @@ fn main() {
         Command::Mesh(a) => commands::mesh::run(a),
         Command::Print(a) => commands::print::run(a),
         Command::Serve(a) => commands::serve::run(a),
+        Command::Guide(a) => commands::guide::run(a),
         Command::Completions(a) => commands::completions(a),
     };
     match result {

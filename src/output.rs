@@ -36,6 +36,9 @@ fn is_own_file(name: &str) -> bool {
     let mut mesh_suffixes = std::iter::once(MESH_SPEC_SUFFIX).chain(garmentcode::mesh::write::FILE_SUFFIXES);
     OWN_FILES.contains(&name)
         || name == MANIFEST
+        || name == "size-run.txt"
+        || name == "measuring-guide.html"
+        || (name.starts_with("figure-") && name.ends_with(".svg"))
         || garmentcode::fabricate::FILE_NAMES.contains(&name)
         || mesh_suffixes.any(|s| name.len() > s.len() && name.ends_with(s))
 }

@@ -853,3 +853,21 @@ fn a_size_run_prints_every_size_nested_and_names_the_sizes_it_leaves_out() {
     let o = run(&["print", "t-shirt", "--sizes", "mean_all", "--size-chart", "x.yaml", "--out", "none"], &dir);
     assert_eq!(code(&o), 2, "--sizes and --size-chart exclude each other");
 }
+
+#[test]
+fn guide_writes_the_measuring_guide_for_a_body() {
+    let dir = scratch("guide");
+    std::fs::write(dir.join("me.yaml"), "body:\n  base: mean_female\n  units: in\n  height: 65\n  waist: 29\n").unwrap();
+    let o = run(&["guide", "--body", "me.yaml", "--out", "g"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let html = std::fs::read_to_string(dir.join("g/measuring-guide.html")).unwrap();
+    assert!(html.contains("drawn on me.yaml") && html.contains("me.yaml: 73.66 cm"), "the body's own values, in cm");
+    for m in garmentcode::MEASUREMENTS {
+        assert!(html.contains(&format!(r#"id="{}""#, m.name)), "{}", m.name);
+        let svg = std::fs::read_to_string(dir.join(format!("g/figure-{}.svg", m.name))).unwrap();
+        assert!(svg.contains(r#"class="tape""#), "{}", m.name);
+    }
+    // Again into the same folder: its own files are replaced.
+    assert_eq!(code(&run(&["guide", "--out", "g"], &dir)), 0);
+    assert!(std::fs::read_to_string(dir.join("g/measuring-guide.html")).unwrap().contains("drawn on mean_all"));
+}
