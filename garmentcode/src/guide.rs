@@ -387,10 +387,9 @@ h2{{font-size:1.05em;margin:.2em 0}} code{{background:#f4f4f4;padding:0 .2em}}
     );
     for m in MEASUREMENTS {
         let value = body.get(m.name).map_or_else(|| "not given".to_string(), |v| format!("{} {}", num(v), m.unit));
-        let _ = write!(
+        let _ = writeln!(
             out,
-            r#"<section class="card" id="{name}">{svg}<h2><code>{name}</code></h2><p>{what}</p><p>{how}</p><p class="range">Plausible: {min} to {max} {unit}{optional}. {title}: {value}.</p></section>
-"#,
+            r#"<section class="card" id="{name}">{svg}<h2><code>{name}</code></h2><p>{what}</p><p>{how}</p><p class="range">Plausible: {min} to {max} {unit}{optional}. {title}: {value}.</p></section>"#,
             name = m.name,
             svg = figure_svg(body, m.name).unwrap_or_default(),
             what = escape(m.description),
