@@ -152,6 +152,9 @@ fn route_inner(req: &Request) -> Response {
     if let Some(name) = api.strip_prefix("/design/") {
         return if get { reply(builtin_design(name)) } else { allow("GET, HEAD") };
     }
+    if let Some(name) = api.strip_prefix("/guide/") {
+        return if get { guide_figure(name).unwrap_or_else(|e| error_response(&e)) } else { allow("GET, HEAD") };
+    }
     if let Some(name) = api.strip_prefix("/body/") {
         return if get { reply(builtin_body(name).map(|b| body_json(name, &b))) } else { allow("GET, HEAD") };
     }
@@ -230,7 +233,7 @@ fn reply(r: ApiResult<Json>) -> Response {
 fn index() -> Json {
     json!({
         "endpoints": [
-            "GET /api/schema", "GET /api/json-schema", "GET /api/design/NAME", "GET /api/body/NAME",
+            "GET /api/schema", "GET /api/json-schema", "GET /api/design/NAME", "GET /api/body/NAME", "GET /api/guide/NAME.svg",
             "POST /api/design", "POST /api/body", "POST /api/pattern", "POST /api/mesh", "POST /api/random", "POST /api/files",
             "POST /api/zip"
         ],
@@ -535,6 +538,7 @@ pub fn schema() -> Json {
                 "description": m.description,
                 "min": m.min,
                 "max": m.max,
+                "how": garmentcode::guide::how_to_measure(m.name),
             })
         })
         .collect();
@@ -550,6 +554,17 @@ pub fn schema() -> Json {
         "derived": derived,
         "random_attempts": garments::sample::MAX_ATTEMPTS,
     })
+}
+
+/// `GET /api/guide/NAME.svg`: where the tape goes for measurement NAME (the
+/// measuring guide's figure, drawn on the neutral body).
+fn guide_figure(file: &str) -> ApiResult<Response> {
+    let name = file.strip_suffix(".svg").unwrap_or(file);
+    let body = builtin_body(garments::builtin::DEFAULT_BODY)?;
+    let svg = garmentcode::guide::figure_svg(&body, name).ok_or_else(|| {
+        ApiError::new(404, format!("no measurement {} (see GET /api/schema, measurements)", garmentcode::message::quote_name(name)))
+    })?;
+    Ok(Response { status: 200, content_type: "image/svg+xml", headers: Vec::new(), body: svg.into_bytes() })
 }
 
 fn schema_text() -> &'static str {

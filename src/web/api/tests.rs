@@ -543,3 +543,19 @@ fn the_body_name_is_checked() {
         assert!(r["error"].as_str().unwrap().starts_with("body.name"), "{r}");
     }
 }
+
+#[test]
+fn the_measuring_guide_is_served_for_every_measurement() {
+    let (_, schema) = call("GET", "/api/schema", "");
+    for m in schema["measurements"].as_array().unwrap() {
+        let name = m["name"].as_str().unwrap();
+        assert!(m["how"].as_str().is_some_and(|h| h.len() > 20), "{name}: how to measure it");
+        let r = route(&request("GET", &format!("/api/guide/{name}.svg"), ""));
+        assert_eq!((r.status, r.content_type), (200, "image/svg+xml"), "{name}");
+        assert!(String::from_utf8(r.body).unwrap().contains(r#"class="tape""#), "{name}");
+    }
+    let (status, e) = call("GET", "/api/guide/nose.svg", "");
+    assert_eq!(status, 404);
+    assert!(e["error"].as_str().unwrap().contains("no measurement `nose`"), "{e}");
+    assert_eq!(call("POST", "/api/guide/waist.svg", "").0, 405);
+}

@@ -330,25 +330,41 @@ function buildBodyControls() {
     input.type = "number";
     input.id = "m-" + m.name;
     input.step = "any";
-    input.min = m.min;
-    input.max = m.max;
+    const unit = document.createElement("span");
+    unit.className = "unit";
+    const problem = document.createElement("div");
+    problem.className = "problem";
+    problem.setAttribute("role", "status");
+    // Range check as you type; the value is taken when it is plausible.
+    input.addEventListener("input", () => checkMeasure(m, input, problem));
     input.addEventListener("change", () => {
       if (input.value === "" && m.optional) state.measurements[m.name] = null;
-      else if (input.value === "" || !Number.isFinite(Number(input.value))) { showBody(); return; }
-      else state.measurements[m.name] = Number(input.value);
+      else if (!checkMeasure(m, input, problem)) return;
+      else state.measurements[m.name] = toCm(m, Number(input.value));
       state.bodyLabel = "custom";
       $("body-select").value = "";
       schedule();
     });
-    const unit = document.createElement("span");
-    unit.className = "unit";
-    unit.textContent = m.unit === "deg" ? "°" : m.unit;
     const desc = document.createElement("div");
     desc.className = "desc";
     desc.textContent = m.description;
-    row.append(label, input, unit, desc);
+    // How to take it: the guide's sentence and figure, loaded when opened.
+    const how = document.createElement("details");
+    how.className = "how";
+    how.innerHTML = `<summary>how to measure</summary><p></p>`;
+    how.querySelector("p").textContent = m.how || "";
+    how.addEventListener("toggle", () => {
+      if (how.open && !how.querySelector("img")) {
+        const img = document.createElement("img");
+        img.alt = `Where the tape goes for ${m.name}`;
+        img.src = "/api/guide/" + encodeURIComponent(m.name) + ".svg";
+        how.append(img);
+      }
+    });
+    row.append(label, input, unit, problem, desc, how);
     root.append(row);
   }
+  showUnits();
   const droot = $("derived");
   droot.textContent = "";
   for (const d of state.schema.derived) {
@@ -363,10 +379,43 @@ function buildBodyControls() {
   }
 }
 
+// Lengths are shown in the chosen unit; the state, files and API stay in cm.
+function inches(m) { return m.unit === "cm" && $("body-units").value === "in"; }
+function toCm(m, v) { return inches(m) ? v * 2.54 : v; }
+function fromCm(m, v) { return inches(m) ? v / 2.54 : v; }
+
+// Marks a measurement outside its plausible range while it is typed; true when it may be taken.
+function checkMeasure(m, input, problem) {
+  const shown = inches(m) ? "in" : m.unit === "deg" ? "°" : m.unit;
+  const [lo, hi] = [fromCm(m, m.min), fromCm(m, m.max)].map((x) => Number(x.toFixed(2)));
+  let msg = "";
+  if (input.value === "") msg = m.optional ? "" : "required";
+  else if (!Number.isFinite(Number(input.value))) msg = "not a number";
+  else if (toCm(m, Number(input.value)) < m.min || toCm(m, Number(input.value)) > m.max) msg = `outside the plausible ${lo} to ${hi} ${shown}`;
+  problem.textContent = msg;
+  input.setAttribute("aria-invalid", msg ? "true" : "false");
+  input.closest(".measure").classList.toggle("invalid", msg !== "");
+  return msg === "" && input.value !== "";
+}
+
+function showUnits() {
+  for (const m of state.schema.measurements) {
+    const input = $("m-" + m.name);
+    input.min = Number(fromCm(m, m.min).toFixed(2));
+    input.max = Number(fromCm(m, m.max).toFixed(2));
+    input.closest(".measure").querySelector(".unit").textContent = inches(m) ? "in" : m.unit === "deg" ? "°" : m.unit;
+  }
+  showBody();
+}
+
 function showBody(derived) {
   for (const [name, v] of Object.entries(state.measurements)) {
     const input = $("m-" + name);
-    if (input) input.value = v === null ? "" : fmt(v);
+    const m = state.schema.measurements.find((x) => x.name === name);
+    if (input && m) {
+      input.value = v === null ? "" : fmt(Number(fromCm(m, v).toFixed(3)));
+      checkMeasure(m, input, input.closest(".measure").querySelector(".problem"));
+    }
   }
   if (derived) {
     for (const [name, v] of Object.entries(derived)) {
@@ -786,6 +835,7 @@ async function main() {
   $("layout").addEventListener("change", (ev) => { state.layout = ev.target.value; state.view = null; schedule(); });
   $("tab-design").addEventListener("click", () => selectTab("design"));
   $("tab-body").addEventListener("click", () => selectTab("body"));
+  $("body-units").addEventListener("change", showUnits);
 
   try {
     await loadBody(state.schema.default_body);
