@@ -62,6 +62,9 @@ fn the_page_and_its_files_are_served() {
         ("/", "text/html"),
         ("/app.js", "text/javascript"),
         ("/view3d.js", "text/javascript"),
+        ("/drape.js", "text/javascript"),
+        ("/vendor/three.module.min.js", "text/javascript"),
+        ("/vendor/OrbitControls.js", "text/javascript"),
         ("/style.css", "text/css"),
         ("/icon.svg", "image/svg+xml"),
     ] {
@@ -71,10 +74,15 @@ fn the_page_and_its_files_are_served() {
         assert!(!r.body.is_empty());
     }
     // Offline: nothing is loaded from elsewhere.
-    for path in ["/", "/app.js", "/view3d.js", "/style.css"] {
+    for path in ["/", "/app.js", "/view3d.js", "/drape.js", "/vendor/OrbitControls.js", "/style.css"] {
         let text = String::from_utf8(route(&request("GET", path, "")).body).unwrap();
         assert!(!text.contains("http://") && !text.contains("https://") && !text.contains("//cdn"), "{path} loads nothing external");
     }
+    // three.js is served from here: the page's import map and the drape view name these paths.
+    let page = String::from_utf8(route(&request("GET", "/", "")).body).unwrap();
+    assert!(page.contains(r#""three": "/vendor/three.module.min.js""#));
+    let three = String::from_utf8(route(&request("GET", "/vendor/three.module.min.js", "")).body).unwrap();
+    assert!(three.contains("SPDX-License-Identifier: MIT") && !three.contains("import "), "one self-contained module");
 }
 
 #[test]
