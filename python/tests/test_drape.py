@@ -33,7 +33,7 @@ def test_a_skirt_drapes_into_numpy_arrays(skirt):
     assert np.array_equal(d.mesh.vertices, mesh.vertices)
     obj = d.obj()
     assert obj.count("\nv ") + obj.startswith("v ") == n
-    assert "Drape('skirt'" in repr(d)
+    assert repr(d) == f'Drape("skirt", {n} vertices, 5 frames, not converged)'
 
 
 def test_same_inputs_same_drape(skirt):
