@@ -934,5 +934,15 @@ fn the_page_works_at_phone_width() {
     b.wait_drawing("a random design", v);
     assert_eq!(b.js(no_overflow), json!(true), "no horizontal overflow with a random design");
 
+    // The drape view fits too: its canvas and settings within the width.
+    b.click(&b.find("#show-drape"));
+    let outside = b.js("return ['#drape3d', '#drape-settings', '#drape-frames', '#drape-resolution', '#drape-status']
+            .filter(css => { const r = document.querySelector(css).getBoundingClientRect();
+                             return !(r.width > 0 && r.height > 0 && r.left >= 0 && r.right <= innerWidth); })");
+    assert_eq!(outside, json!([]), "the drape view within the width");
+    assert_eq!(b.js(no_overflow), json!(true), "no horizontal overflow in the drape view");
+    b.screenshot(&scratch.join("4-drape.png"));
+    b.click(&b.find("#show-2d"));
+
     eprintln!("phone browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
 }
