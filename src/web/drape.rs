@@ -38,6 +38,21 @@ pub const TIME_LIMIT: Duration = Duration::from_secs(180);
 /// A drape whose progress nobody has asked for this long is stopped.
 pub const ABANDONED: Duration = Duration::from_secs(20);
 
+/// The time bounds of a drape job.
+#[derive(Clone, Copy, Debug)]
+pub struct Bounds {
+    /// Wall time after which it is stopped ([`TIME_LIMIT`]).
+    pub time: Duration,
+    /// Time without a poll after which it is stopped ([`ABANDONED`]).
+    pub abandoned: Duration,
+}
+
+impl Default for Bounds {
+    fn default() -> Bounds {
+        Bounds { time: TIME_LIMIT, abandoned: ABANDONED }
+    }
+}
+
 /// Where a drape is.
 #[derive(Clone, Debug, PartialEq)]
 enum State {
@@ -88,6 +103,11 @@ fn current() -> MutexGuard<'static, Current> {
 
 /// `POST /api/drape`: see the [module documentation](self).
 pub fn start(input: &Json) -> Result<String, ApiError> {
+    start_with(input, Bounds::default())
+}
+
+/// [`start`] with other time bounds.
+pub fn start_with(input: &Json, bounds: Bounds) -> Result<String, ApiError> {
     let max_frames = match input.get("max_frames") {
         None | Some(Json::Null) => DEFAULT_FRAMES,
         Some(v) => v.as_u64().filter(|n| (1..=MAX_FRAMES as u64).contains(n)).map(|n| n as usize).ok_or_else(|| {
@@ -122,7 +142,7 @@ pub fn start(input: &Json) -> Result<String, ApiError> {
         }),
     });
     let mut text =
-        json!({ "ok": true, "job": job.id, "name": m.name, "max_frames": max_frames, "time_limit": TIME_LIMIT.as_secs() }).to_string();
+        json!({ "ok": true, "job": job.id, "name": m.name, "max_frames": max_frames, "time_limit": bounds.time.as_secs() }).to_string();
     text.pop(); // the closing brace
     text.push_str(",\"body_mesh\":{\"name\":");
     text.push_str(&Json::String(body_mesh.name.clone()).to_string());
@@ -149,7 +169,7 @@ pub fn start(input: &Json) -> Result<String, ApiError> {
     let worker = Arc::clone(&job);
     let thread = std::thread::Builder::new()
         .name(format!("garmentcode-drape-{}", job.id))
-        .spawn(move || run(&worker, &mesh, &body_mesh, &settings))
+        .spawn(move || run(&worker, &mesh, &body_mesh, &settings, bounds))
         .map_err(|e| ApiError::new(503, format!("cannot start a drape: {e}")))?;
     cur.job = Some(job);
     cur.thread = Some(thread);
@@ -157,7 +177,7 @@ pub fn start(input: &Json) -> Result<String, ApiError> {
 }
 
 /// The drape itself, on its own thread.
-fn run(job: &Job, mesh: &garmentcode::mesh::BoxMesh, body: &BodyMesh, settings: &Settings) {
+fn run(job: &Job, mesh: &garmentcode::mesh::BoxMesh, body: &BodyMesh, settings: &Settings, bounds: Bounds) {
     let mut stopped = None;
     let result = drape_with_progress(mesh, body, settings, |p| {
         let mut s = job.status();
@@ -166,10 +186,10 @@ fn run(job: &Job, mesh: &garmentcode::mesh::BoxMesh, body: &BodyMesh, settings: 
         s.positions.copy_from_slice(p.positions);
         stopped = if job.cancel.load(Ordering::Relaxed) {
             Some("cancelled".to_string())
-        } else if job.started.elapsed() > TIME_LIMIT {
-            Some(format!("the time limit of {} s was reached", TIME_LIMIT.as_secs()))
-        } else if s.polled.elapsed() > ABANDONED {
-            Some(format!("nobody asked for its progress for {} s", ABANDONED.as_secs()))
+        } else if job.started.elapsed() > bounds.time {
+            Some(format!("the time limit of {} s was reached", bounds.time.as_secs()))
+        } else if s.polled.elapsed() > bounds.abandoned {
+            Some(format!("nobody asked for its progress for {} s", bounds.abandoned.as_secs()))
         } else {
             None
         };

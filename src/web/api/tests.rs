@@ -599,6 +599,21 @@ fn a_drape_is_started_polled_replaced_and_cancelled() {
     assert_eq!(s["error"], "cancelled");
     assert!(s["frame"].as_u64().unwrap() < 2400);
 
+    // Bounded in time: past its time limit, or unpolled for too long, a drape stops.
+    use super::super::drape::{Bounds, start_with};
+    let long = json!({ "design": skirt, "resolution": 4, "max_frames": 2400 });
+    let zero = std::time::Duration::ZERO;
+    let hour = std::time::Duration::from_secs(3600);
+    for (bounds, why) in [
+        (Bounds { time: zero, abandoned: hour }, "the time limit of 0 s was reached"),
+        (Bounds { time: hour, abandoned: zero }, "nobody asked for its progress for 0 s"),
+    ] {
+        let d: Json = serde_json::from_str(&start_with(&long, bounds).unwrap()).unwrap();
+        super::super::drape::wait();
+        let (_, s) = call("GET", &format!("/api/drape/{}", d["job"]), "");
+        assert_eq!((&s["state"], &s["error"], &s["frame"]), (&json!("stopped"), &json!(why), &json!(1)), "{s}");
+    }
+
     // Bad requests: the range is named; a design that does not build is ok: false.
     let (status, e) = post("/api/drape", json!({ "design": skirt, "max_frames": 0 }));
     assert_eq!(status, 400);
