@@ -96,6 +96,8 @@ struct Current {
 
 static CURRENT: Mutex<Current> = Mutex::new(Current { job: None, thread: None });
 static NEXT_ID: AtomicU64 = AtomicU64::new(1);
+/// Held by a start from stopping the previous drape to starting its own.
+static STARTING: Mutex<()> = Mutex::new(());
 
 fn current() -> MutexGuard<'static, Current> {
     CURRENT.lock().unwrap_or_else(|e| e.into_inner())
@@ -157,13 +159,18 @@ pub fn start_with(input: &Json, bounds: Bounds) -> Result<String, ApiError> {
     text.push_str(&mesh_json(&mesh));
     text.push('}');
 
-    // One drape at a time: stop the running one and wait for its thread (it stops
-    // after its current frame) before starting this one.
-    let mut cur = current();
-    if let Some(old) = &cur.job {
-        old.cancel.store(true, Ordering::Relaxed);
-    }
-    if let Some(thread) = cur.thread.take() {
+    // One drape at a time: starts take turns; each stops the running drape and waits
+    // for its thread (it stops after its current frame) before starting its own. The
+    // polls only need `CURRENT`, which is not held while waiting.
+    let _turn = STARTING.lock().unwrap_or_else(|e| e.into_inner());
+    let old = {
+        let mut cur = current();
+        if let Some(old) = &cur.job {
+            old.cancel.store(true, Ordering::Relaxed);
+        }
+        cur.thread.take()
+    };
+    if let Some(thread) = old {
         let _ = thread.join();
     }
     let worker = Arc::clone(&job);
@@ -171,8 +178,7 @@ pub fn start_with(input: &Json, bounds: Bounds) -> Result<String, ApiError> {
         .name(format!("garmentcode-drape-{}", job.id))
         .spawn(move || run(&worker, &mesh, &body_mesh, &settings, bounds))
         .map_err(|e| ApiError::new(503, format!("cannot start a drape: {e}")))?;
-    cur.job = Some(job);
-    cur.thread = Some(thread);
+    *current() = Current { job: Some(job), thread: Some(thread) };
     Ok(text)
 }
 
