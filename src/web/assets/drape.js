@@ -184,7 +184,11 @@ async function start(request) {
     if (seq === run.seq) { message("The drape cannot be started: " + e.message); progress(0, 1, "", "error"); }
     return;
   }
-  if (seq !== run.seq || !run.shown) return;
+  if (seq !== run.seq || !run.shown) {
+    // Left meanwhile: stop it (a newer start stops it anyway).
+    if (!run.shown && res.ok) call("POST", "/api/drape/cancel", { job: res.job }).catch(() => {});
+    return;
+  }
   if (!res.ok) {
     message("No drape of this design: " + res.error);
     progress(0, 1, "", "error");
