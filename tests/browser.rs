@@ -8,7 +8,8 @@
 //! check them against the library; change the body; draw a random design. And the
 //! 3D view: the box mesh drawn by WebGL (SwiftShader, the software renderer, in
 //! headless Chromium), rotated with the mouse, zoomed with the wheel, its seams
-//! shown and hidden, redrawn when a design value changes.
+//! shown and hidden, redrawn when a design value changes. And the drape view: a skirt
+//! draped on the body (three.js on WebGL 2), its progress, its pixels.
 //!
 //! Needs `chromium` and `chromedriver` (Debian: `apt-get install chromium
 //! chromium-driver`). The test is `#[ignore]`d, so a plain `cargo test` reports it
