@@ -8,7 +8,8 @@
 //! check them against the library; change the body; draw a random design. And the
 //! 3D view: the box mesh drawn by WebGL (SwiftShader, the software renderer, in
 //! headless Chromium), rotated with the mouse, zoomed with the wheel, its seams
-//! shown and hidden, redrawn when a design value changes.
+//! shown and hidden, redrawn when a design value changes. And the drape view: a skirt
+//! draped on the body (three.js on WebGL 2), its progress, its pixels.
 //!
 //! Needs `chromium` and `chromedriver` (Debian: `apt-get install chromium
 //! chromium-driver`). The test is `#[ignore]`d, so a plain `cargo test` reports it
@@ -620,6 +621,140 @@ fn the_3d_view_shows_the_box_mesh() {
     eprintln!("3D browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
 }
 
+/// What the drape view's canvas shows, read back from its WebGL 2 context: the share of
+/// garment-coloured (blue) and body-coloured (warm, unsaturated) pixels, and where each
+/// lies (centroid and extent, as shares of the width and height, from the top left).
+const READ_DRAPE: &str = "
+    const c = document.getElementById('drape3d');
+    const gl = c.getContext('webgl2');
+    const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+    const px = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    const kinds = { garment: [0, 0, 0, 1, 0, 1, 0], body: [0, 0, 0, 1, 0, 1, 0] };
+    for (let y = 0; y < h; y++) for (let x = 0; x < w; x++) {
+        const i = 4 * (y * w + x), r = px[i], g = px[i + 1], b = px[i + 2];
+        const k = b > r + 40 && b > g + 10 ? kinds.garment
+                : r > b + 12 && r >= g && r - b < 120 && r + g + b < 720 ? kinds.body : null;
+        if (!k) continue;
+        const fx = x / w, fy = 1 - y / h; // readPixels rows start at the bottom
+        k[0]++; k[1] += fx; k[2] += fy;
+        k[3] = Math.min(k[3], fy); k[4] = Math.max(k[4], fy); k[5] = Math.min(k[5], fx); k[6] = Math.max(k[6], fx);
+    }
+    const out = {};
+    for (const [name, k] of Object.entries(kinds)) {
+        out[name] = { share: k[0] / (w * h), x: k[1] / Math.max(k[0], 1), y: k[2] / Math.max(k[0], 1), top: k[3], bottom: k[4], left: k[5], right: k[6] };
+    }
+    return out;";
+
+/// The drape view: a skirt draped on the body for 150 frames (some seconds: its progress
+/// is seen) at a coarse mesh, drawn by three.js: garment-coloured pixels on the body-coloured body
+/// where a skirt belongs (below the chest, across the body's middle); rotated with the
+/// mouse, zoomed with the wheel; a design change drapes again, replacing the drape.
+#[test]
+#[ignore = "needs chromium and chromedriver: GARMENTCODE_BROWSER_TEST=1 cargo test --test browser -- --ignored"]
+fn the_drape_view_shows_the_garment_on_the_body() {
+    let started = Instant::now();
+    let Some(Session { b, url, scratch, _server, .. }) = session("browser-drape") else { return };
+    b.goto(&url);
+    b.wait_drawing("the first drawing", 0);
+    // A circle skirt alone: no upper garment.
+    let v = b.version();
+    b.js("const pick = (path, label) => {
+              const s = document.querySelector(`.param[data-path='${path}'] select`);
+              s.value = [...s.options].find(o => o.textContent === label).value;
+              s.dispatchEvent(new Event('change'));
+          };
+          pick('meta.upper', 'none'); pick('meta.bottom', 'SkirtCircle');");
+    b.wait_drawing("the skirt", v);
+    b.js("document.getElementById('drape-frames').value = '150'; document.getElementById('drape-resolution').value = '3';");
+
+    b.click(&b.find("#show-drape"));
+    assert_eq!(b.js("return document.getElementById('drape3d').dataset.webgl"), "yes", "WebGL 2 is available");
+    assert!(b.js("return document.getElementById('drawing').hidden").as_bool().unwrap(), "the 2D drawing is hidden");
+    // Progress while it drapes, then the end.
+    let (mut seen_running, t) = (false, Instant::now());
+    loop {
+        let s = b.js("const c = document.getElementById('drape3d'); return [c.dataset.state, Number(c.dataset.frame)]");
+        match s[0].as_str().unwrap() {
+            "running" if s[1].as_u64().unwrap() > 0 => seen_running = true,
+            "done" => break,
+            "error" | "failed" | "stopped" => {
+                panic!("the drape ended with {s}: {}", b.js("return document.getElementById('drape-message').textContent"))
+            }
+            _ => {}
+        }
+        assert!(t.elapsed() < Duration::from_secs(180), "the drape did not finish: {s}");
+        std::thread::sleep(Duration::from_millis(30));
+    }
+    assert!(seen_running, "the progress was shown while it draped");
+    let info = b.js("return document.getElementById('drape-info').textContent");
+    assert!(info.as_str().unwrap().starts_with("Draped: 150 frames"), "{info}");
+    let job = b.js("return document.getElementById('drape3d').dataset.job");
+    b.screenshot(&scratch.join("1-drape.png"));
+
+    let look = b.js(READ_DRAPE);
+    let (garment, body) = (&look["garment"], &look["body"]);
+    let f = |v: &Json, k: &str| v[k].as_f64().unwrap();
+    assert!(f(garment, "share") > 0.01, "garment-coloured pixels: {look}");
+    assert!(f(body, "share") > 0.02, "body-coloured pixels: {look}");
+    // Where a skirt sits: across the middle of the body, below its shoulders, above its feet.
+    let height = f(body, "bottom") - f(body, "top");
+    assert!((f(garment, "x") - f(body, "x")).abs() < 0.1, "the skirt centred on the body: {look}");
+    assert!(f(garment, "top") > f(body, "top") + height / 4.0, "the skirt below the shoulders: {look}");
+    assert!(f(garment, "bottom") < f(body, "bottom"), "the skirt above the feet: {look}");
+
+    // Drag to rotate: another picture; the wheel zooms in: the body covers more of it.
+    let canvas = b.find("#drape3d");
+    b.actions(json!([{
+        "type": "pointer", "id": "mouse", "parameters": { "pointerType": "mouse" },
+        "actions": [
+            { "type": "pointerMove", "duration": 0, "origin": { ELEMENT: canvas }, "x": 0, "y": 0 },
+            { "type": "pointerDown", "button": 0 },
+            { "type": "pointerMove", "duration": 200, "origin": "pointer", "x": 120, "y": 0 },
+            { "type": "pointerUp", "button": 0 },
+        ],
+    }]));
+    let t = Instant::now();
+    let turned = loop {
+        let now = b.js(READ_DRAPE);
+        if (f(&now["garment"], "x") - f(garment, "x")).abs() > 0.002 || (f(&now["body"], "share") - f(body, "share")).abs() > 0.002 {
+            break now;
+        }
+        assert!(t.elapsed() < Duration::from_secs(10), "the view did not turn: {now}");
+        std::thread::sleep(Duration::from_millis(50));
+    };
+    b.screenshot(&scratch.join("2-rotated.png"));
+    b.actions(json!([{
+        "type": "wheel", "id": "wheel",
+        "actions": [{ "type": "scroll", "duration": 0, "origin": { ELEMENT: canvas }, "x": 0, "y": 0, "deltaX": 0, "deltaY": -300 }],
+    }]));
+    let t = Instant::now();
+    loop {
+        let now = b.js(READ_DRAPE);
+        if f(&now["body"], "share") + f(&now["garment"], "share") > 1.2 * (f(&turned["body"], "share") + f(&turned["garment"], "share")) {
+            break;
+        }
+        assert!(t.elapsed() < Duration::from_secs(10), "the view did not zoom: {now}");
+        std::thread::sleep(Duration::from_millis(50));
+    }
+
+    // A design change drapes again: a new job, run to its end.
+    let v = b.version();
+    b.click(&b.find("details[data-group='flare-skirt'] > summary"));
+    let slider = b.find(".param[data-path='flare-skirt.length'] input[type=range]");
+    b.keys(&slider, &"\u{E012}".repeat(5)); // ArrowLeft
+    b.wait_drawing("the shorter skirt", v);
+    let script = format!("const c = document.getElementById('drape3d'); return c.dataset.job !== {job} && c.dataset.state === 'done'");
+    b.wait("the drape of the shorter skirt", 180, &script);
+    b.screenshot(&scratch.join("3-shorter.png"));
+
+    // Back to 2D: the drape is cancelled (the server keeps no drape running).
+    b.click(&b.find("#show-2d"));
+    assert!(b.js("return document.getElementById('drape-view').hidden").as_bool().unwrap());
+
+    eprintln!("drape browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
+}
+
 /// What "Start from" shows and which values are marked changed: `[select value,
 /// selected option's text, changed paths, the groups' "N changed" texts]`.
 const CHANGES: &str = "
@@ -767,7 +902,7 @@ fn the_page_works_at_phone_width() {
     assert!(host[2] - host[0] >= 360.0 && host[3] - host[1] >= 250.0, "and large: {host:?}");
     assert!(panels[0] >= host[0] - 1.0 && panels[2] <= host[2] + 1.0 && panels[3] - panels[1] > 100.0, "the pattern in it: {panels:?}");
     let outside = b.js("return ['#design-select', '#reset', '#random', '#seed', '#upload-button', '#download-design', '#download-zip',
-                 '#show-2d', '#show-3d', '#layout', '#show-stitches', '#zoom-in', '#zoom-fit', '#tab-design', '#tab-body', '#filter',
+                 '#show-2d', '#show-3d', '#show-drape', '#layout', '#show-stitches', '#zoom-in', '#zoom-fit', '#tab-design', '#tab-body', '#filter',
                  \".param[data-path='meta.upper'] select\"]
             .filter(css => { const r = document.querySelector(css).getBoundingClientRect();
                              return !(r.width > 0 && r.height > 0 && r.left >= 0 && r.right <= innerWidth); })");
@@ -799,6 +934,16 @@ fn the_page_works_at_phone_width() {
     b.click(&b.find("#random"));
     b.wait_drawing("a random design", v);
     assert_eq!(b.js(no_overflow), json!(true), "no horizontal overflow with a random design");
+
+    // The drape view fits too: its canvas and settings within the width.
+    b.click(&b.find("#show-drape"));
+    let outside = b.js("return ['#drape3d', '#drape-settings', '#drape-frames', '#drape-resolution', '#drape-status']
+            .filter(css => { const r = document.querySelector(css).getBoundingClientRect();
+                             return !(r.width > 0 && r.height > 0 && r.left >= 0 && r.right <= innerWidth); })");
+    assert_eq!(outside, json!([]), "the drape view within the width");
+    assert_eq!(b.js(no_overflow), json!(true), "no horizontal overflow in the drape view");
+    b.screenshot(&scratch.join("4-drape.png"));
+    b.click(&b.find("#show-2d"));
 
     eprintln!("phone browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
 }

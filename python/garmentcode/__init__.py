@@ -11,7 +11,7 @@ tool, byte for byte::
     pattern.write("out/shirt", formats=["json", "svg", "mesh"])
 
 Everything public: :class:`DesignSpace`, :class:`Body`, :func:`build`,
-:class:`Pattern` (with :class:`Mesh`), :func:`sample_dataset`,
+:class:`Pattern` (with :class:`Mesh` and :class:`Drape`), :func:`sample_dataset`,
 :func:`iter_shards` / :class:`ShardDataset`, :func:`compare_specs`, the
 exceptions, and :mod:`garmentcode.compat` (pygarment's names).
 """
@@ -23,6 +23,7 @@ from ._native import (
     DatasetError,
     DesignError,
     DesignSpace,
+    Drape,
     InputError,
     Mesh,
     Pattern,
@@ -43,6 +44,7 @@ __all__ = [
     "DatasetError",
     "DesignError",
     "DesignSpace",
+    "Drape",
     "InputError",
     "Mesh",
     "Pattern",

@@ -119,6 +119,25 @@ class DesignSpace:
         is a fixed point of the round trip for any design."""
     def __len__(self) -> int: ...
 
+class Drape:
+    """A draped garment (``Pattern.drape``)."""
+
+    @property
+    def positions(self) -> np.ndarray:
+        """(V, 3) float64, cm, y up, in the box mesh's vertex order."""
+    @property
+    def faces(self) -> np.ndarray:
+        """(F, 3) int64."""
+    @property
+    def vertex_labels(self) -> List[str]: ...
+    @property
+    def mesh(self) -> Mesh: ...
+    @property
+    def stats(self) -> Dict[str, Any]:
+        """frames, seconds, converged, non_static_vertices, body_penetrations, self_intersections."""
+    def obj(self) -> str:
+        """The ``<name>_sim.obj`` text."""
+
 class Mesh:
     """The simulation box mesh of a pattern."""
 
@@ -187,6 +206,15 @@ class Pattern:
     def body(self) -> Optional[Body]: ...
     def mesh(self, resolution: float = 1.0) -> Mesh:
         """The simulation box mesh."""
+    def drape(
+        self,
+        body: Optional[BodyLike] = None,
+        body_mesh: Optional[PathLike] = None,
+        max_frames: int = 2400,
+        resolution: float = 1.0,
+        self_collision: bool = True,
+    ) -> Drape:
+        """The garment draped on the body (GIL released while it runs)."""
     def write(
         self,
         out: PathLike,

@@ -792,6 +792,55 @@ impl PyPattern {
         Ok(PyMesh { mesh })
     }
 
+    /// Drape the garment on a body: the box mesh at `resolution` cm simulated as cloth
+    /// falling onto the body mesh (`garmentcode_drape`, the reference's scheme), for at
+    /// most `max_frames` frames (it stops earlier once the garment is at rest).
+    /// `body`: measurements as `build` takes them (default: the body the pattern was
+    /// built on, else the neutral body); they place the waist and collar attachments.
+    /// `body_mesh`: the path of a closed body OBJ in metres, y up (default: the body's
+    /// built-in mesh). The GIL is released while it runs. Raises `BodyError` (no mesh
+    /// for the body, a bad body mesh), `PatternError` (a pattern that cannot be
+    /// meshed), `InputError` (a setting out of range).
+    #[pyo3(signature = (body = None, body_mesh = None, max_frames = 2400, resolution = 1.0, self_collision = true))]
+    fn drape(
+        &self,
+        py: Python<'_>,
+        body: Option<&Bound<'_, PyAny>>,
+        body_mesh: Option<&Bound<'_, PyAny>>,
+        max_frames: i64,
+        resolution: f64,
+        self_collision: bool,
+    ) -> PyResult<PyDrape> {
+        let limit = garmentcode_drape::solver::MAX_FRAMES;
+        if !(1..=limit as i64).contains(&max_frames) {
+            return Err(InputError::new_err(format!("max_frames: expected a number of frames from 1 to {limit}, got {max_frames}")));
+        }
+        let body = match (body, &self.origin) {
+            (None, Some(o)) => o.body.clone(),
+            (b, _) => load_body(b)?,
+        };
+        let mesh_file = body_mesh.map(path_or_str).transpose()?;
+        let pattern = &self.pattern;
+        let (mesh, result) = py.detach(|| {
+            let mesh = BoxMesh::new(pattern, resolution)
+                .map_err(|e| PatternError::new_err(format!("{}: cannot mesh the pattern: {e}", pattern.name)))?;
+            let collider = match &mesh_file {
+                Some(f) => garmentcode_drape::BodyMesh::load(f.as_ref()),
+                None => garmentcode_drape::BodyMesh::for_body(&body.name, &body.body),
+            }
+            .map_err(|e| BodyError::new_err(e.to_string()))?;
+            let mut settings = garmentcode_drape::Settings::for_body(&body.body).with_panel_labels(pattern);
+            settings.max_frames = max_frames as usize;
+            settings.self_collision = self_collision;
+            let result = garmentcode_drape::drape(&mesh, &collider, &settings).map_err(|e| match e {
+                garmentcode_drape::DrapeError::Mesh { .. } => PatternError::new_err(e.to_string()),
+                garmentcode_drape::DrapeError::Setting { .. } => InputError::new_err(e.to_string()),
+            })?;
+            Ok::<_, PyErr>((mesh, result))
+        })?;
+        Ok(PyDrape { mesh: PyMesh { mesh }, result })
+    }
+
     /// Write the pattern's files into the folder `out`, as `garmentcode build`
     /// does: `specification.json` (always), `pattern.svg`, `pattern.png`, the mesh
     /// files and the printable pattern (PDF, SVG sheet, DXF, cutting layout) for the formats `svg`, `png`,
@@ -986,6 +1035,72 @@ impl PyMesh {
     }
 }
 
+/// A draped garment (`Pattern.drape`): its box mesh's vertices moved onto the body.
+#[pyclass(module = "garmentcode", name = "Drape", frozen)]
+struct PyDrape {
+    mesh: PyMesh,
+    result: garmentcode_drape::Drape,
+}
+
+#[pymethods]
+impl PyDrape {
+    /// Draped vertex positions, `(V, 3)` float64, cm, y up, in the box mesh's order.
+    #[getter]
+    fn positions<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let v: Vec<f64> = self.result.positions.iter().flat_map(|p| [p.x, p.y, p.z]).collect();
+        array(py, v, "float64", 3)
+    }
+
+    /// Triangles, `(F, 3)` int64 vertex ids (the box mesh's).
+    #[getter]
+    fn faces<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.mesh.faces(py)
+    }
+
+    /// Segmentation label of each vertex, as `Mesh.vertex_labels`.
+    #[getter]
+    fn vertex_labels(&self) -> Vec<String> {
+        self.mesh.vertex_labels()
+    }
+
+    /// The box mesh that was draped (its rest positions, texture coordinates, panels).
+    #[getter]
+    fn mesh(&self) -> PyMesh {
+        PyMesh { mesh: self.mesh.mesh.clone() }
+    }
+
+    /// Figures of the run: `frames`, `seconds`, `converged` (came to rest before the
+    /// frame limit), `non_static_vertices`, `body_penetrations`, `self_intersections`.
+    #[getter]
+    fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let s = &self.result.stats;
+        let d = PyDict::new(py);
+        d.set_item("frames", s.frames)?;
+        d.set_item("seconds", s.seconds)?;
+        d.set_item("converged", s.converged)?;
+        d.set_item("non_static_vertices", s.non_static_vertices)?;
+        d.set_item("body_penetrations", s.body_penetrations)?;
+        d.set_item("self_intersections", s.self_intersections)?;
+        Ok(d)
+    }
+
+    /// `<name>_sim.obj`'s text: the box mesh's OBJ with the draped positions (cm).
+    fn obj(&self) -> String {
+        garmentcode_drape::sim_obj(&self.mesh.mesh, &self.result.positions)
+    }
+
+    fn __repr__(&self) -> String {
+        let s = &self.result.stats;
+        format!(
+            "Drape({:?}, {} vertices, {} frames, {})",
+            self.mesh.mesh.name,
+            self.result.positions.len(),
+            s.frames,
+            if s.converged { "converged" } else { "not converged" }
+        )
+    }
+}
+
 /// Build a garment: `design` (a dict, nested as the reference's design files or
 /// flat `{path: value}`; YAML text; a built-in design name or a design file
 /// path) on `body` (a `Body`, a built-in name, a body file path, or a dict;
@@ -1169,6 +1284,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyDesignSpace>()?;
     m.add_class::<PyPattern>()?;
     m.add_class::<PyMesh>()?;
+    m.add_class::<PyDrape>()?;
     m.add_function(wrap_pyfunction!(build, m)?)?;
     m.add_function(wrap_pyfunction!(builtin_designs, m)?)?;
     m.add_function(wrap_pyfunction!(sample_dataset, m)?)?;

@@ -5,7 +5,7 @@
 //! Everything a page or a tool needs goes through here: the design space (the
 //! page builds its controls from it), built-in designs and bodies, the pattern of a
 //! design on a body (drawing, `specification.json`, the reference's checks), its
-//! simulation box mesh for the 3D view, random designs from the project's sampler,
+//! simulation box mesh for the 3D view, its drape on the body ([`super::drape`]), random designs from the project's sampler,
 //! and the files of a design for download.
 //!
 //! Errors follow one rule: a request the server cannot read (malformed JSON, an
@@ -158,7 +158,14 @@ fn route_inner(req: &Request) -> Response {
     if let Some(name) = api.strip_prefix("/body/") {
         return if get { reply(builtin_body(name).map(|b| body_json(name, &b))) } else { allow("GET, HEAD") };
     }
-    const POSTS: [&str; 7] = ["/pattern", "/mesh", "/design", "/body", "/random", "/files", "/zip"];
+    if let Some(job) = api.strip_prefix("/drape/").filter(|j| *j != "cancel") {
+        return if get {
+            super::drape::status(job).map_or_else(|e| error_response(&e), |t| json_text_response(200, t))
+        } else {
+            allow("GET, HEAD")
+        };
+    }
+    const POSTS: [&str; 9] = ["/pattern", "/mesh", "/drape", "/drape/cancel", "/design", "/body", "/random", "/files", "/zip"];
     if !POSTS.contains(&api) {
         return error_response(&ApiError::new(404, format!("no such API endpoint: {} (see GET /api)", shown(path))));
     }
@@ -172,6 +179,8 @@ fn route_inner(req: &Request) -> Response {
     let result = match api {
         "/pattern" => pattern_text(&input).map(|text| json_text_response(200, text)),
         "/mesh" => mesh_text(&input).map(|text| json_text_response(200, text)),
+        "/drape" => super::drape::start(&input).map(|text| json_text_response(200, text)),
+        "/drape/cancel" => super::drape::cancel(&input).map(|v| json_response(200, &v)),
         "/zip" => zip_archive(&input).map(|(name, bytes)| Response {
             status: 200,
             content_type: "application/zip",
@@ -234,7 +243,8 @@ fn index() -> Json {
     json!({
         "endpoints": [
             "GET /api/schema", "GET /api/json-schema", "GET /api/design/NAME", "GET /api/body/NAME", "GET /api/guide/NAME.svg",
-            "POST /api/design", "POST /api/body", "POST /api/pattern", "POST /api/mesh", "POST /api/random", "POST /api/files",
+            "POST /api/design", "POST /api/body", "POST /api/pattern", "POST /api/mesh", "POST /api/drape", "GET /api/drape/JOB",
+            "POST /api/drape/cancel", "POST /api/random", "POST /api/files",
             "POST /api/zip"
         ],
         "documentation": "README.md, section 'Web configurator and its API'",
@@ -343,7 +353,7 @@ pub fn shown(text: &str) -> Cow<'_, str> {
 
 /// A JSON value as an error message shows it: a string quoted and shortened
 /// ([`message::quote`]), a number in a short form, an array or object by its type.
-fn json_shown(v: &Json) -> String {
+pub(super) fn json_shown(v: &Json) -> String {
     match v {
         Json::String(s) => message::quote(s),
         Json::Number(n) => match n.as_f64() {
@@ -721,7 +731,28 @@ pub const MESH_RESOLUTION: [f64; 2] = [garmentcode::mesh::DEFAULT_RESOLUTION, 10
 /// A design the library refuses, or a pattern that cannot be meshed, is
 /// `ok: false` with the reason, as for [`pattern_text`].
 pub fn mesh_text(input: &Json) -> ApiResult<String> {
-    check_keys(input, &["design", "body", "name", "resolution"])?;
+    let m = meshed(input, &[])?;
+    Ok(match m.result {
+        Err(reason) => json!({ "ok": false, "name": m.name, "error": reason, "problems": [reason] }).to_string(),
+        Ok((_, mesh)) => mesh_json(&mesh),
+    })
+}
+
+/// A request's box mesh ([`mesh_text`], [`super::drape`]): the pattern name, the body, and
+/// the pattern with its mesh or the library's reason for refusing the design.
+pub(super) struct Meshed {
+    pub name: String,
+    pub body_name: String,
+    pub body: Body,
+    pub result: Result<(garmentcode::Pattern, garmentcode::mesh::BoxMesh), String>,
+}
+
+/// Reads `design`, `body`, `name` and `resolution` (cm, [`MESH_RESOLUTION`], default 1) of
+/// a request that may also have the keys `extra`, builds the pattern and meshes it.
+pub(super) fn meshed(input: &Json, extra: &[&str]) -> ApiResult<Meshed> {
+    let mut keys = vec!["design", "body", "name", "resolution"];
+    keys.extend_from_slice(extra);
+    check_keys(input, &keys)?;
     let [lo, hi] = MESH_RESOLUTION;
     let resolution = match input.get("resolution") {
         None | Some(Json::Null) => garmentcode::mesh::DEFAULT_RESOLUTION,
@@ -732,23 +763,38 @@ pub fn mesh_text(input: &Json) -> ApiResult<String> {
     };
     let name = pattern_name(input)?;
     let values = design_values(input.get("design"))?;
-    let (_, body) = body_from(input.get("body"))?;
+    let (body_name, body) = body_from(input.get("body"))?;
     let design = typed_design(&values)?;
     let built = ARENA.with(|a| garments::build::build_in(&mut a.borrow_mut(), &design, &body, &name)).map_err(|e| e.to_string());
-    let mesh =
-        built.and_then(|b| garmentcode::mesh::BoxMesh::new(&b.pattern, resolution).map_err(|e| format!("cannot mesh the pattern: {e}")));
-    Ok(match mesh {
-        Err(reason) => json!({ "ok": false, "name": name, "error": reason, "problems": [reason] }).to_string(),
-        Ok(m) => mesh_json(&m),
-    })
+    let result = built.and_then(|b| match garmentcode::mesh::BoxMesh::new(&b.pattern, resolution) {
+        Ok(mesh) => Ok((b.pattern, mesh)),
+        Err(e) => Err(format!("cannot mesh the pattern: {e}")),
+    });
+    Ok(Meshed { name, body_name, body, result })
+}
+
+/// A length in cm as the API sends it: to 0.01 cm, without a negative zero (a rounded
+/// value prints as its shortest decimal).
+fn cm(x: f64) -> f64 {
+    (x * 100.0).round() / 100.0 + 0.0
+}
+
+/// `[x, y, z, x, y, z, ...]` of `positions` in cm (to 0.01 cm), appended to `text`.
+pub(super) fn write_positions(text: &mut String, positions: &[garmentcode::Vec3]) {
+    use std::fmt::Write;
+    text.reserve(positions.len() * 24);
+    text.push('[');
+    for (i, v) in positions.iter().enumerate() {
+        let sep = if i == 0 { "" } else { "," };
+        let _ = write!(text, "{sep}{},{},{}", cm(v.x), cm(v.y), cm(v.z));
+    }
+    text.push(']');
 }
 
 /// The JSON text of [`mesh_text`] for a mesh, written directly (a mesh has some
 /// hundred thousand numbers).
-fn mesh_json(m: &garmentcode::mesh::BoxMesh) -> String {
+pub(super) fn mesh_json(m: &garmentcode::mesh::BoxMesh) -> String {
     use std::fmt::Write;
-    // 0.01 cm, without a negative zero; a rounded value prints as its shortest decimal.
-    let cm = |x: f64| (x * 100.0).round() / 100.0 + 0.0;
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
     for v in &m.vertices {
@@ -786,12 +832,9 @@ fn mesh_json(m: &garmentcode::mesh::BoxMesh) -> String {
     let mut text = head.to_string();
     text.pop(); // the closing brace
     text.reserve(m.vertices.len() * 24 + m.faces.len() * 18);
-    text.push_str(",\"positions\":[");
-    for (i, v) in m.vertices.iter().enumerate() {
-        let sep = if i == 0 { "" } else { "," };
-        let _ = write!(text, "{sep}{},{},{}", cm(v.x), cm(v.y), cm(v.z));
-    }
-    text.push_str("],\"triangles\":[");
+    text.push_str(",\"positions\":");
+    write_positions(&mut text, &m.vertices);
+    text.push_str(",\"triangles\":[");
     for (i, f) in m.faces.iter().enumerate() {
         let sep = if i == 0 { "" } else { "," };
         let [a, b, c] = f.vertices;

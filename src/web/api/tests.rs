@@ -62,6 +62,9 @@ fn the_page_and_its_files_are_served() {
         ("/", "text/html"),
         ("/app.js", "text/javascript"),
         ("/view3d.js", "text/javascript"),
+        ("/drape.js", "text/javascript"),
+        ("/vendor/three.module.min.js", "text/javascript"),
+        ("/vendor/OrbitControls.js", "text/javascript"),
         ("/style.css", "text/css"),
         ("/icon.svg", "image/svg+xml"),
     ] {
@@ -71,10 +74,15 @@ fn the_page_and_its_files_are_served() {
         assert!(!r.body.is_empty());
     }
     // Offline: nothing is loaded from elsewhere.
-    for path in ["/", "/app.js", "/view3d.js", "/style.css"] {
+    for path in ["/", "/app.js", "/view3d.js", "/drape.js", "/vendor/OrbitControls.js", "/style.css"] {
         let text = String::from_utf8(route(&request("GET", path, "")).body).unwrap();
         assert!(!text.contains("http://") && !text.contains("https://") && !text.contains("//cdn"), "{path} loads nothing external");
     }
+    // three.js is served from here: the page's import map and the drape view name these paths.
+    let page = String::from_utf8(route(&request("GET", "/", "")).body).unwrap();
+    assert!(page.contains(r#""three": "/vendor/three.module.min.js""#));
+    let three = String::from_utf8(route(&request("GET", "/vendor/three.module.min.js", "")).body).unwrap();
+    assert!(three.contains("SPDX-License-Identifier: MIT") && !three.contains("import "), "one self-contained module");
 }
 
 #[test]
@@ -558,4 +566,87 @@ fn the_measuring_guide_is_served_for_every_measurement() {
     assert_eq!(status, 404);
     assert!(e["error"].as_str().unwrap().contains("no measurement `nose`"), "{e}");
     assert_eq!(call("POST", "/api/guide/waist.svg", "").0, 405);
+
+/// The drape view's endpoints, in one test (they share the server's one drape): a
+/// small skirt draped for a few frames on the built-in body, polled to the end; a new
+/// drape replaces the running one; bad requests are refused with their range.
+#[test]
+fn a_drape_is_started_polled_replaced_and_cancelled() {
+    let skirt = json!({ "meta.bottom": "SkirtCircle" });
+    let (status, d) = post("/api/drape", json!({ "design": skirt, "body": "mean_all", "resolution": 4, "max_frames": 3 }));
+    assert_eq!(status, 200, "{d}");
+    assert_eq!(d["ok"], true, "{d}");
+    let job = d["job"].as_u64().unwrap();
+    let vertices = d["mesh"]["vertices"].as_u64().unwrap() as usize;
+    assert!(vertices > 10);
+    assert_eq!(d["mesh"]["positions"].as_array().unwrap().len(), 3 * vertices);
+    let body = &d["body_mesh"];
+    assert_eq!(body["name"], "mean_all");
+    assert_eq!(body["positions"].as_array().unwrap().len() % 3, 0);
+    assert!(body["triangles"].as_array().unwrap().len() > 10_000);
+    super::super::drape::wait();
+    let (status, s) = call("GET", &format!("/api/drape/{job}"), "");
+    assert_eq!(status, 200, "{s}");
+    assert_eq!(s["state"], "done", "{s}");
+    assert_eq!(s["frame"], 3);
+    assert_eq!(s["stats"]["frames"], 3);
+    assert_eq!(s["stats"]["converged"], false);
+    let positions = s["positions"].as_array().unwrap();
+    assert_eq!(positions.len(), 3 * vertices);
+    assert_ne!(positions, d["mesh"]["positions"].as_array().unwrap(), "the garment moved");
+
+    // A new drape stops the one running and replaces it: the old job is gone.
+    let (_, a) = post("/api/drape", json!({ "design": skirt, "resolution": 4, "max_frames": 2400 }));
+    let (_, b) = post("/api/drape", json!({ "design": skirt, "resolution": 4, "max_frames": 2 }));
+    let (first, second) = (a["job"].as_u64().unwrap(), b["job"].as_u64().unwrap());
+    assert!(second > first);
+    let (status, old) = call("GET", &format!("/api/drape/{first}"), "");
+    assert_eq!(status, 404, "{old}");
+    assert!(old["error"].as_str().unwrap().contains("only the latest drape is kept"), "{old}");
+    // Cancelling the running one stops it at its next frame.
+    let (_, c) = post("/api/drape", json!({ "design": skirt, "resolution": 4, "max_frames": 2400 }));
+    let third = c["job"].as_u64().unwrap();
+    let (status, r) = post("/api/drape/cancel", json!({ "job": third }));
+    assert_eq!(status, 200, "{r}");
+    super::super::drape::wait();
+    let (_, s) = call("GET", &format!("/api/drape/{third}"), "");
+    assert_eq!(s["state"], "stopped", "{s}");
+    assert_eq!(s["error"], "cancelled");
+    assert!(s["frame"].as_u64().unwrap() < 2400);
+
+    // Bounded in time: past its time limit, or unpolled for too long, a drape stops.
+    use super::super::drape::{Bounds, start_with};
+    let long = json!({ "design": skirt, "resolution": 4, "max_frames": 2400 });
+    let zero = std::time::Duration::ZERO;
+    let hour = std::time::Duration::from_secs(3600);
+    for (bounds, why) in [
+        (Bounds { time: zero, abandoned: hour }, "the time limit of 0 s was reached"),
+        (Bounds { time: hour, abandoned: zero }, "nobody asked for its progress for 0 s"),
+    ] {
+        let d: Json = serde_json::from_str(&start_with(&long, bounds).unwrap()).unwrap();
+        super::super::drape::wait();
+        let (_, s) = call("GET", &format!("/api/drape/{}", d["job"]), "");
+        assert_eq!((&s["state"], &s["error"], &s["frame"]), (&json!("stopped"), &json!(why), &json!(1)), "{s}");
+    }
+
+    // Bad requests: the range is named; a design that does not build is ok: false.
+    let (status, e) = post("/api/drape", json!({ "design": skirt, "max_frames": 0 }));
+    assert_eq!(status, 400);
+    assert_eq!(e["error"], "max_frames: expected a whole number of frames from 1 to 2400, got 0");
+    let (status, e) = post("/api/drape", json!({ "design": skirt, "max_frames": 1e9 }));
+    assert_eq!(status, 400, "{e}");
+    let (status, e) = post("/api/drape", json!({ "design": skirt, "frames": 3 }));
+    assert_eq!(status, 400);
+    assert!(e["error"].as_str().unwrap().starts_with("unknown key"), "{e}");
+    let (status, e) = post("/api/drape", json!({}));
+    assert_eq!((status, &e["ok"]), (200, &json!(false)), "{e}");
+    assert!(e["error"].as_str().unwrap().contains("empty"), "{e}");
+    let (status, e) = post("/api/drape/cancel", json!({ "job": "x" }));
+    assert_eq!(status, 400, "{e}");
+    let (status, _) = call("GET", "/api/drape/nope", "");
+    assert_eq!(status, 404);
+    let (status, _) = call("POST", "/api/drape/1", "{}");
+    assert_eq!(status, 405);
+    let (status, _) = call("GET", "/api/drape", "");
+    assert_eq!(status, 405);
 }

@@ -1,7 +1,8 @@
 // GarmentCode configurator: controls generated from the design space served at
 // /api/schema, the pattern re-evaluated by POST /api/pattern as they move (and its
-// box mesh by POST /api/mesh while the 3D view is shown, drawn by view3d.js).
-// Plain JS, no dependencies: the page works offline from the binary alone.
+// box mesh by POST /api/mesh while the 3D view is shown, drawn by view3d.js; the
+// drape view is drape.js's, on three.js).
+// Plain JS; three.js is vendored: the page works offline from the binary alone.
 "use strict";
 
 const DEBOUNCE_MS = 60;
@@ -477,6 +478,7 @@ async function evaluate() {
     $("overlay").hidden = true;
     state.meshStale = true;
     if (state.mode === "3d") await loadMesh();
+    if (state.mode === "drape") window.drapeView.restart(drapeRequest());
     const ms = Math.round(performance.now() - t0);
     const summary = `${res.panels.length} panels · ${res.stitches} stitches · ${ms} ms`;
     setStatus(res.warnings.length ? "warning" : "ok", res.warnings.length ? `${summary} · ${res.warnings.length} warning(s)` : summary);
@@ -617,11 +619,12 @@ function setupZoom() {
   host.addEventListener("pointercancel", end);
   host.addEventListener("pointerleave", () => { $("panel-tip").hidden = true; });
   host.addEventListener("dblclick", () => { state.view = null; applyView(); });
-  const in3d = () => state.mode === "3d" && state.mesh3d;
-  $("zoom-in").addEventListener("click", () => (in3d() ? state.mesh3d.zoom(1 / 1.3) : zoom(1 / 1.3)));
-  $("zoom-out").addEventListener("click", () => (in3d() ? state.mesh3d.zoom(1.3) : zoom(1.3)));
+  // The view shown: the drawing, the box mesh, or the drape.
+  const shown = () => (state.mode === "3d" && state.mesh3d ? state.mesh3d : state.mode === "drape" ? window.drapeView : null);
+  $("zoom-in").addEventListener("click", () => (shown() ? shown().zoom(1 / 1.3) : zoom(1 / 1.3)));
+  $("zoom-out").addEventListener("click", () => (shown() ? shown().zoom(1.3) : zoom(1.3)));
   $("zoom-fit").addEventListener("click", () => {
-    if (in3d()) state.mesh3d.fit();
+    if (shown()) shown().fit();
     else { state.view = null; applyView(); }
   });
 }
@@ -630,12 +633,18 @@ function setupZoom() {
 // 3D view
 
 function selectView(mode) {
+  const was = state.mode;
   state.mode = mode;
-  for (const m of ["2d", "3d"]) $("show-" + m).setAttribute("aria-selected", String(m === mode));
+  for (const m of ["2d", "3d", "drape"]) $("show-" + m).setAttribute("aria-selected", String(m === mode));
   $("drawing").hidden = mode !== "2d";
   $("view3d").hidden = mode !== "3d";
+  $("drape-view").hidden = mode !== "drape";
   $("layout").hidden = mode !== "2d";
+  $("show-stitches").parentElement.hidden = mode === "drape";
   $("panel-tip").hidden = true;
+  // The drape view (drape.js, a module: loaded by the time a user clicks).
+  if (was === "drape" && mode !== "drape") window.drapeView.hide();
+  if (mode === "drape" && was !== "drape") window.drapeView.show(drapeRequest());
   if (mode !== "3d") return;
   if (state.mesh3d === undefined) {
     try {
@@ -651,6 +660,12 @@ function selectView(mode) {
     state.mesh3d.setSeams($("show-stitches").checked);
   }
   if (state.meshStale && state.lastGood) loadMesh();
+}
+
+// POST /api/drape's body: the current design and body.
+function drapeRequest() {
+  const { layout, ...request } = requestBody();
+  return request;
 }
 
 function showMeshMessage(text) {
@@ -832,6 +847,7 @@ async function main() {
   });
   $("show-2d").addEventListener("click", () => selectView("2d"));
   $("show-3d").addEventListener("click", () => selectView("3d"));
+  $("show-drape").addEventListener("click", () => selectView("drape"));
   $("layout").addEventListener("change", (ev) => { state.layout = ev.target.value; state.view = null; schedule(); });
   $("tab-design").addEventListener("click", () => selectTab("design"));
   $("tab-body").addEventListener("click", () => selectTab("body"));
