@@ -566,6 +566,7 @@ fn the_measuring_guide_is_served_for_every_measurement() {
     assert_eq!(status, 404);
     assert!(e["error"].as_str().unwrap().contains("no measurement `nose`"), "{e}");
     assert_eq!(call("POST", "/api/guide/waist.svg", "").0, 405);
+}
 
 /// The drape view's endpoints, in one test (they share the server's one drape): a
 /// small skirt draped for a few frames on the built-in body, polled to the end; a new
