@@ -168,11 +168,11 @@ fn a_design_the_library_refuses_is_explained() {
 
 #[test]
 fn warnings_of_the_reference_checks_are_reported() {
-    // A shirt longer than the body: too long for the floor.
-    let (status, r) = post(
-        "/api/pattern",
-        json!({ "design": { "meta.upper": "Shirt", "shirt.length": 3.5 }, "body": { "measurements": { "height": 120.0 } } }),
-    );
+    // A shirt longer than the body: too long for the floor (a short body whose
+    // torso keeps the neutral body's lengths, which would otherwise follow the height).
+    let torso = json!({ "height": 120.0, "head_l": 26.3262, "waist_line": 36.8913, "hips_line": 23.4837, "crotch_hip_diff": 8.81363 });
+    let (status, r) =
+        post("/api/pattern", json!({ "design": { "meta.upper": "Shirt", "shirt.length": 3.5 }, "body": { "measurements": torso } }));
     assert_eq!(status, 200);
     assert_eq!(r["ok"], true, "{r}");
     let w: Vec<&str> = r["warnings"].as_array().unwrap().iter().map(|x| x.as_str().unwrap()).collect();
