@@ -19,10 +19,18 @@ const PACKED_MAGIC: &[u8; 8] = b"GCBODY1\0";
 /// Packed coordinates are integers in this unit (cm): 0.1 mm.
 const PACKED_UNIT: f64 = 0.01;
 
-/// The built-in bodies, packed: the reference's `mean_all` body mesh (23,752 vertices,
-/// 47,500 triangles) with its part segmentation (`ggg_body_segmentation.json`), 0.1 mm
-/// resolution. The reference's other bodies load from their OBJ files ([`BodyMesh::load`]).
-pub const BUILTIN: [(&str, &[u8]); 1] = [("mean_all", include_bytes!("../data/mean_all.body"))];
+/// The built-in bodies, packed at 0.1 mm resolution with their part segmentations: the
+/// reference's `mean_all`, `mean_female` and `mean_male` (23,752 vertices, 47,500 triangles,
+/// segmentation `ggg_body_segmentation.json`; MIT) and the SMPL averages `f_smpl_average_A40`,
+/// `m_smpl_average_A40` (6,890 vertices, 13,776 triangles, SMPL's vertex segmentation grouped
+/// into [`PARTS`]; CC BY 4.0). Other bodies get a mannequin ([`BodyMesh::for_body`]).
+pub const BUILTIN: [(&str, &[u8]); 5] = [
+    ("mean_all", include_bytes!("../data/mean_all.body")),
+    ("mean_female", include_bytes!("../data/mean_female.body")),
+    ("mean_male", include_bytes!("../data/mean_male.body")),
+    ("f_smpl_average_A40", include_bytes!("../data/f_smpl_average_A40.body")),
+    ("m_smpl_average_A40", include_bytes!("../data/m_smpl_average_A40.body")),
+];
 
 /// The body parts of a segmentation, in the reference's order.
 pub const PARTS: [&str; 6] = ["body", "left_arm", "left_leg", "right_arm", "right_leg", "face_internal"];
