@@ -77,6 +77,14 @@ pub enum BodyError {
         /// Which edges are open or shared by more than two triangles.
         reason: String,
     },
+    /// No mannequin can be made from the body's measurements.
+    #[error("{file}: cannot make a mannequin: {reason}")]
+    Mannequin {
+        /// The body file.
+        file: String,
+        /// Which measurements disagree.
+        reason: String,
+    },
     /// The mesh's height (y extent, after metres → cm) is implausible.
     #[error("{file}: body height {height:.3} cm (y extent × 100) is outside {min}..{max} cm: the body mesh must be in metres, y up")]
     Height {
@@ -153,22 +161,20 @@ impl BodyMesh {
     }
 
     /// The body mesh to drape on for a body: the built-in mesh when `name` is a built-in
-    /// body that has one ([`BUILTIN`]), else a mesh made from `measurements`.
-    ///
-    /// Today only the built-in meshes exist: any other body is refused with a pointer to
-    /// `--body-mesh` (a mannequin made from the measurements is issue 24's next step).
+    /// body ([`BUILTIN`]), else a mannequin made from `measurements`
+    /// ([`crate::mannequin::mannequin`]; `name` names the body file in errors).
     pub fn for_body(name: &str, measurements: &garmentcode::Body) -> Result<BodyMesh, BodyError> {
-        let _ = measurements;
         if BUILTIN.iter().any(|(n, _)| *n == name) {
             return BodyMesh::builtin(name);
         }
-        Err(BodyError::Read {
-            file: name.to_string(),
-            reason: format!(
-                "no body mesh for this body (built in: {}); give one with --body-mesh FILE.obj",
-                BUILTIN.map(|(n, _)| n).join(", ")
-            ),
-        })
+        crate::mannequin::mannequin(measurements, name)
+    }
+
+    /// This body with the part bits of every vertex (one per entry of [`PARTS`]).
+    pub(crate) fn with_part_bits(mut self, parts: Vec<u8>) -> BodyMesh {
+        debug_assert_eq!(parts.len(), self.vertices.len());
+        self.parts = parts;
+        self
     }
 
     /// The compact form of this body (for [`BUILTIN`]): magic `GCBODY1\0`, vertex and
@@ -406,6 +412,27 @@ impl BodyMesh {
     /// Signed distance (cm) from `p` to the body surface: negative inside.
     pub fn signed_distance(&self, p: Vec3) -> f64 {
         self.closest(p, f64::INFINITY).map_or(f64::INFINITY, |h| h.signed)
+    }
+
+    /// The edges of the mesh (vertex pairs, 0-based) that cross one of its triangles (one
+    /// they do not belong to): none for a surface that does not pass through itself.
+    pub fn self_intersections(&self) -> Vec<(u32, u32)> {
+        let mut edges: Vec<(u32, u32)> =
+            self.faces.iter().flat_map(|f| [0, 1, 2].map(|k| (f[k].min(f[(k + 1) % 3]), f[k].max(f[(k + 1) % 3])))).collect();
+        edges.sort_unstable();
+        edges.dedup();
+        edges
+            .iter()
+            .filter(|&&(a, b)| {
+                let (p, q) = (self.vertices[a as usize], self.vertices[b as usize]);
+                let mut hit = false;
+                self.bvh.for_each_in_box(p.min(q), p.max(q), |f| {
+                    hit = hit || (!self.faces[f].contains(&a) && !self.faces[f].contains(&b) && crate::bvh::segment_crosses(p, q - p, &self.tris[f]).is_some())
+                });
+                hit
+            })
+            .copied()
+            .collect()
     }
 
     /// Whether segment `a`–`b` crosses the body surface.
