@@ -427,7 +427,10 @@ impl BodyMesh {
                 let (p, q) = (self.vertices[a as usize], self.vertices[b as usize]);
                 let mut hit = false;
                 self.bvh.for_each_in_box(p.min(q), p.max(q), |f| {
-                    hit = hit || (!self.faces[f].contains(&a) && !self.faces[f].contains(&b) && crate::bvh::segment_crosses(p, q - p, &self.tris[f]).is_some())
+                    hit = hit
+                        || (!self.faces[f].contains(&a)
+                            && !self.faces[f].contains(&b)
+                            && crate::bvh::segment_crosses(p, q - p, &self.tris[f]).is_some())
                 });
                 hit
             })

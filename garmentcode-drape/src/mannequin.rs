@@ -28,6 +28,9 @@ use crate::body::{BodyError, BodyMesh, PARTS};
 /// file's underbust within a centimetre).
 pub const UNDERBUST_FRACTION: f64 = 0.45;
 
+/// Largest arm angle (degrees below the horizontal) of a mannequin.
+pub const MAX_ARM_ANGLE: f64 = 85.0;
+
 /// Correction rounds of the section factors.
 const ROUNDS: usize = 5;
 
@@ -89,7 +92,15 @@ impl Levels {
         let waist = nape - b.waist_line;
         let bust = nape - b.vert_bust_line.unwrap_or(b.bust_line);
         let hips = waist - b.hips_line;
-        Levels { crotch: hips - b.crotch_hip_diff, hips, waist, underbust: bust - UNDERBUST_FRACTION * (bust - waist), bust, nape, top: b.height }
+        Levels {
+            crotch: hips - b.crotch_hip_diff,
+            hips,
+            waist,
+            underbust: bust - UNDERBUST_FRACTION * (bust - waist),
+            bust,
+            nape,
+            top: b.height,
+        }
     }
 
     /// Floor to top, in order.
@@ -103,27 +114,42 @@ impl Levels {
 /// garment programs put the waistband, the bust line and the hip line, so the girths there
 /// are the ones a drape depends on. The floor is the mesh's lowest point.
 pub fn measure(body: &BodyMesh, levels: &Body) -> Measured {
-    let l = Levels::of(levels);
-    let (lo, hi) = body.bounds();
-    let torso = |level: f64| Section::torso(body, lo.y + level);
-    let (bust, under, waist, hips, nape) = (torso(l.bust), torso(l.underbust), torso(l.waist), torso(l.hips), torso(l.nape));
-    let arms = Arms::of(body);
-    let (angle, extent) = arms.as_ref().map_or((f64::NAN, f64::NAN), |a| {
-        let n = a.len() as f64;
-        (a.iter().map(|a| a.angle()).sum::<f64>() / n, a.iter().map(|a| a.extent(body)).sum::<f64>() / n)
-    });
-    Measured {
-        height: hi.y - lo.y,
-        bust: bust.girth(),
-        underbust: under.girth(),
-        waist: waist.girth(),
-        hips: hips.girth(),
-        neck_w: nape.back(),
-        back_width: bust.back(),
-        waist_back_width: waist.back(),
-        hip_back_width: hips.back(),
-        arm_pose_angle: angle,
-        arm_extent: extent,
+    Shape { vertices: &body.vertices, faces: &body.faces, parts: body.parts() }.measure(levels)
+}
+
+/// A triangle mesh as [`measure`] reads it (a mannequin is measured before it is a checked
+/// [`BodyMesh`]).
+struct Shape<'a> {
+    vertices: &'a [Vec3],
+    faces: &'a [[u32; 3]],
+    parts: Option<&'a [u8]>,
+}
+
+impl Shape<'_> {
+    fn measure(&self, levels: &Body) -> Measured {
+        let body = self;
+        let l = Levels::of(levels);
+        let (lo, hi) = body.vertices.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), v| (lo.min(*v), hi.max(*v)));
+        let torso = |level: f64| Section::torso(body, lo.y + level);
+        let (bust, under, waist, hips, nape) = (torso(l.bust), torso(l.underbust), torso(l.waist), torso(l.hips), torso(l.nape));
+        let arms = Arms::of(body);
+        let (angle, extent) = arms.as_ref().map_or((f64::NAN, f64::NAN), |a| {
+            let n = a.len() as f64;
+            (a.iter().map(|a| a.angle()).sum::<f64>() / n, a.iter().map(|a| a.extent(body)).sum::<f64>() / n)
+        });
+        Measured {
+            height: hi.y - lo.y,
+            bust: bust.girth(),
+            underbust: under.girth(),
+            waist: waist.girth(),
+            hips: hips.girth(),
+            neck_w: nape.back(),
+            back_width: bust.back(),
+            waist_back_width: waist.back(),
+            hip_back_width: hips.back(),
+            arm_pose_angle: angle,
+            arm_extent: extent,
+        }
     }
 }
 
@@ -135,7 +161,7 @@ struct Section {
 impl Section {
     /// The section of `body` at height `y` whose convex hull has the largest area: the torso
     /// (arms and hands are separate, smaller pieces at every torso level of an A-pose).
-    fn torso(body: &BodyMesh, y: f64) -> Section {
+    fn torso(body: &Shape, y: f64) -> Section {
         // Points where mesh edges cross the plane, joined into pieces through the triangles.
         let mut index: HashMap<(u32, u32), usize> = HashMap::new();
         let mut points: Vec<[f64; 2]> = Vec::new();
@@ -147,7 +173,7 @@ impl Section {
             }
             i
         }
-        for f in &body.faces {
+        for f in body.faces {
             let mut ends = [0usize; 2];
             let mut n = 0;
             for k in 0..3 {
@@ -276,7 +302,7 @@ impl Arm {
     }
 
     /// Extent of the arm's vertices along its axis, from the joint.
-    fn extent(&self, body: &BodyMesh) -> f64 {
+    fn extent(&self, body: &Shape) -> f64 {
         self.vertices.iter().map(|&i| (body.vertices[i] - self.joint).dot(self.axis)).fold(0.0, f64::max)
     }
 }
@@ -285,8 +311,8 @@ impl Arm {
 struct Arms;
 
 impl Arms {
-    fn of(body: &BodyMesh) -> Option<Vec<Arm>> {
-        let parts = body.parts()?;
+    fn of(body: &Shape) -> Option<Vec<Arm>> {
+        let parts = body.parts?;
         let bit = |name: &str| 1u8 << PARTS.iter().position(|p| *p == name).unwrap_or(0);
         let mut arms = Vec::new();
         for name in ["left_arm", "right_arm"] {
@@ -294,7 +320,7 @@ impl Arms {
             // The arm's vertices, with the few unsegmented ones (at the fingertips) next to it.
             let mut in_arm: Vec<bool> = parts.iter().map(|p| p & b != 0).collect();
             for _ in 0..3 {
-                for f in &body.faces {
+                for f in body.faces {
                     if f.iter().any(|&i| in_arm[i as usize]) {
                         f.iter().filter(|&&i| parts[i as usize] == 0).for_each(|&i| in_arm[i as usize] = true);
                     }
@@ -307,7 +333,7 @@ impl Arms {
             // The ring: arm vertices on a triangle that also has a vertex of another part.
             let other = |i: u32| parts[i as usize] != 0 && !in_arm[i as usize];
             let mut ring = vec![false; body.vertices.len()];
-            for f in &body.faces {
+            for f in body.faces {
                 if f.iter().any(|&i| other(i)) {
                     f.iter().filter(|&&i| in_arm[i as usize]).for_each(|&i| ring[i as usize] = true);
                 }
@@ -328,7 +354,12 @@ impl Arms {
             }
             let mut axis = (centre - joint).normalize_or_zero();
             for _ in 0..50 {
-                axis = Vec3::new(cov[0][0] * axis.x + cov[0][1] * axis.y + cov[0][2] * axis.z, cov[1][0] * axis.x + cov[1][1] * axis.y + cov[1][2] * axis.z, cov[2][0] * axis.x + cov[2][1] * axis.y + cov[2][2] * axis.z).normalize_or_zero();
+                axis = Vec3::new(
+                    cov[0][0] * axis.x + cov[0][1] * axis.y + cov[0][2] * axis.z,
+                    cov[1][0] * axis.x + cov[1][1] * axis.y + cov[1][2] * axis.z,
+                    cov[2][0] * axis.x + cov[2][1] * axis.y + cov[2][2] * axis.z,
+                )
+                .normalize_or_zero();
             }
             if axis.dot(centre - joint) < 0.0 {
                 axis = -axis;
@@ -356,7 +387,12 @@ fn lerp_knots(xs: &[f64], ys: &[f64], x: f64) -> f64 {
 /// The template for a body file: the mean body nearest in height, bust, waist and hips
 /// (relative differences).
 fn template(b: &Body) -> (&'static str, Body) {
-    let score = |t: &Body| [(b.height, t.height), (b.bust, t.bust), (b.waist, t.waist), (b.hips, t.hips)].iter().map(|(x, y)| (x / y - 1.0).powi(2)).sum::<f64>();
+    let score = |t: &Body| {
+        [(b.height, t.height), (b.bust, t.bust), (b.waist, t.waist), (b.hips, t.hips)]
+            .iter()
+            .map(|(x, y)| (x / y - 1.0).powi(2))
+            .sum::<f64>()
+    };
     let bodies = TEMPLATES.map(|(name, text)| (name, Body::from_yaml(text, name).expect("the templates' measurement files are valid")));
     bodies.into_iter().min_by(|a, b| score(&a.1).total_cmp(&score(&b.1))).expect("there are templates")
 }
@@ -377,6 +413,15 @@ fn template(b: &Body) -> (&'static str, Body) {
 /// # }
 /// ```
 pub fn mannequin(b: &Body, name: &str) -> Result<BodyMesh, BodyError> {
+    if b.arm_pose_angle > MAX_ARM_ANGLE {
+        return Err(BodyError::Mannequin {
+            file: name.to_string(),
+            reason: format!(
+                "arm_pose_angle {} is outside 0..{MAX_ARM_ANGLE} degrees for a mannequin (arms straight down would pass through the hips); give a body mesh with --body-mesh",
+                b.arm_pose_angle
+            ),
+        });
+    }
     let (template_name, t) = template(b);
     let base = BodyMesh::builtin(template_name)?;
     let (from, to) = (Levels::of(&t), Levels::of(b));
@@ -387,14 +432,18 @@ pub fn mannequin(b: &Body, name: &str) -> Result<BodyMesh, BodyError> {
             file: name.to_string(),
             reason: format!(
                 "the {} level ({:.1} cm) is not above the {} level ({:.1} cm); the levels come from height, head_l, waist_line, vert_bust_line (or bust_line), hips_line and crotch_hip_diff",
-                NAMES[i], kb[i], NAMES[i - 1], kb[i - 1]
+                NAMES[i],
+                kb[i],
+                NAMES[i - 1],
+                kb[i - 1]
             ),
         });
     }
     let floor = base.bounds().0.y;
-    let arms = Arms::of(&base).expect("the templates have a segmentation");
     let parts = base.parts().expect("the templates have a segmentation").to_vec();
-    let tm = measure(&base, &t);
+    let shape = Shape { vertices: &base.vertices, faces: &base.faces, parts: Some(&parts) };
+    let arms = Arms::of(&shape).expect("the templates have a segmentation");
+    let tm = shape.measure(&t);
     // Per vertex: which arm (if any) and its blend weight.
     let mut arm_of: Vec<Option<(usize, f64)>> = vec![None; base.vertices.len()];
     for (k, arm) in arms.iter().enumerate() {
@@ -405,7 +454,7 @@ pub fn mannequin(b: &Body, name: &str) -> Result<BodyMesh, BodyError> {
     }
     // Section knots (template heights above the floor) with their centres, and the joint level.
     let sec_levels = [from.crotch, from.hips, from.waist, from.underbust, from.bust, arms[0].joint.y - floor, from.nape];
-    let centres: Vec<[f64; 2]> = sec_levels.iter().map(|&y| Section::torso(&base, floor + y).centre()).collect();
+    let centres: Vec<[f64; 2]> = sec_levels.iter().map(|&y| Section::torso(&shape, floor + y).centre()).collect();
     let girth = |m: &Measured| [m.hips, m.hips, m.waist, m.underbust, m.bust, f64::NAN, m.neck_w];
     let target = [b.hips, b.hips, b.waist, b.underbust, b.bust, f64::NAN, b.neck_w];
     let tg = girth(&tm);
@@ -413,8 +462,8 @@ pub fn mannequin(b: &Body, name: &str) -> Result<BodyMesh, BodyError> {
     let arm_turn0 = b.arm_pose_angle - tm.arm_pose_angle;
     let mut arm_turn = arm_turn0;
     let arm_stretch = b.arm_length / t.arm_length;
-    let mut mesh = base.clone();
-    for round in 0..=ROUNDS {
+    let mut round = 0;
+    loop {
         // Heights: template (above the floor) → file.
         let ymap = |y: f64| lerp_knots(&kt, &kb, y - floor);
         // Section factor and centre at a template height above the floor: 1 at the floor and
@@ -470,11 +519,10 @@ pub fn mannequin(b: &Body, name: &str) -> Result<BodyMesh, BodyError> {
                 }
             })
             .collect();
-        mesh = BodyMesh::new(name, vertices, base.faces.clone())?.with_part_bits(parts.clone());
         if round == ROUNDS {
-            break;
+            return Ok(BodyMesh::new(name, vertices, base.faces.clone())?.with_part_bits(parts));
         }
-        let m = measure(&mesh, b);
+        let m = Shape { vertices: &vertices, faces: &base.faces, parts: Some(&parts) }.measure(b);
         let got = girth(&m);
         for k in 0..7 {
             if k != 5 && got[k] > 0.0 {
@@ -485,6 +533,6 @@ pub fn mannequin(b: &Body, name: &str) -> Result<BodyMesh, BodyError> {
         if !arm_turn.is_finite() {
             arm_turn = arm_turn0;
         }
+        round += 1;
     }
-    Ok(mesh)
 }

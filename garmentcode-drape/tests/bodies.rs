@@ -43,11 +43,18 @@ fn every_built_in_body_has_its_mesh_and_measures_as_its_file() {
         let parts = mesh.parts().unwrap();
         assert!(parts.iter().filter(|&&p| p != 0).count() as f64 > 0.99 * parts.len() as f64, "{name}: parts");
         let m = measure(&mesh, &body(name));
-        let line: Vec<String> = pairs(&m, &body(name)).iter().map(|(k, got, want)| format!("{k} {got:.2}/{want:.2} ({:+.2})", got - want)).collect();
+        let line: Vec<String> =
+            pairs(&m, &body(name)).iter().map(|(k, got, want)| format!("{k} {got:.2}/{want:.2} ({:+.2})", got - want)).collect();
         let x = mesh.self_intersections();
         let mut by_part = std::collections::BTreeMap::new();
-        for (a, _) in &x { *by_part.entry(parts[*a as usize]).or_insert(0) += 1; }
-        println!("{name}: {} self-intersections {by_part:?} e.g. {:?}", x.len(), x.iter().take(3).map(|e| mesh.vertices[e.0 as usize]).collect::<Vec<_>>());
+        for (a, _) in &x {
+            *by_part.entry(parts[*a as usize]).or_insert(0) += 1;
+        }
+        println!(
+            "{name}: {} self-intersections {by_part:?} e.g. {:?}",
+            x.len(),
+            x.iter().take(3).map(|e| mesh.vertices[e.0 as usize]).collect::<Vec<_>>()
+        );
         println!("{name}: {}; arm extent {:.2} (arm_length {:.2})", line.join(", "), m.arm_extent, body(name).arm_length);
         let b = body(name);
         if name.starts_with("mean") {
@@ -87,19 +94,28 @@ fn check_mannequin(label: &str, b: &Body) {
     // The reference's meshes cross themselves at the lips, between the fingers and the
     // thighs; the mannequin crosses itself nowhere else (within 3 cm of those, on the
     // template: same topology).
-    let template = ["mean_all", "mean_female", "mean_male"]
-        .map(|n| BodyMesh::builtin(n).unwrap())
-        .into_iter()
-        .find(|t| t.faces == mesh.faces && t.parts() == mesh.parts())
-        .unwrap();
-    let known = template.self_intersections();
+    static TEMPLATES: std::sync::OnceLock<Vec<(BodyMesh, Vec<(u32, u32)>)>> = std::sync::OnceLock::new();
+    let templates = TEMPLATES.get_or_init(|| {
+        ["mean_all", "mean_female", "mean_male"]
+            .map(|n| {
+                let t = BodyMesh::builtin(n).unwrap();
+                let known = t.self_intersections();
+                (t, known)
+            })
+            .into()
+    });
+    let (template, known) = templates.iter().find(|(t, _)| t.faces == mesh.faces && t.parts() == mesh.parts()).unwrap();
     let parts = mesh.parts().unwrap();
     let near_known = |e: &(u32, u32)| {
         let p = template.vertices[e.0 as usize];
         known.iter().any(|k| (template.vertices[k.0 as usize] - p).length() < 3.0)
     };
-    let new: Vec<_> =
-        mesh.self_intersections().into_iter().filter(|e| !near_known(e)).map(|e| (parts[e.0 as usize], mesh.vertices[e.0 as usize])).collect();
+    let new: Vec<_> = mesh
+        .self_intersections()
+        .into_iter()
+        .filter(|e| !near_known(e))
+        .map(|e| (parts[e.0 as usize], mesh.vertices[e.0 as usize]))
+        .collect();
     assert!(new.is_empty(), "{label}: the mannequin passes through itself at {} edges: {new:?}", new.len());
 }
 
@@ -110,7 +126,10 @@ fn mannequins_measure_as_their_files() {
     check_mannequin("female waist -10 hips +10", &edit("mean_female", &[("waist", f.waist - 10.0), ("hips", f.hips + 10.0)]));
     let m = body("mean_male");
     check_mannequin("male waist +10 hips -10", &edit("mean_male", &[("waist", m.waist + 10.0), ("hips", m.hips - 10.0)]));
-    check_mannequin("male bust -10 arms 35°", &edit("mean_male", &[("bust", m.bust - 10.0), ("underbust", m.underbust - 8.0), ("arm_pose_angle", 35.0)]));
+    check_mannequin(
+        "male bust -10 arms 35°",
+        &edit("mean_male", &[("bust", m.bust - 10.0), ("underbust", m.underbust - 8.0), ("arm_pose_angle", 35.0)]),
+    );
 }
 
 #[test]
@@ -134,6 +153,9 @@ fn short_and_tall_mannequins_measure_as_their_files() {
     };
     check_mannequin("short (150 cm)", &scaled(short));
     check_mannequin("tall (195 cm)", &scaled(195.0 / a.height));
+    // T-pose and arms nearly down.
+    check_mannequin("arms 0°", &edit("mean_all", &[("arm_pose_angle", 0.0)]));
+    check_mannequin("arms 85°", &edit("mean_all", &[("arm_pose_angle", 85.0)]));
 }
 
 #[test]
@@ -149,10 +171,12 @@ fn mannequins_are_deterministic_and_keep_the_arm_length() {
 }
 
 #[test]
-fn mannequin_levels_out_of_order_are_refused() {
+fn mannequins_of_levels_out_of_order_or_arms_down_are_refused() {
     let bad = edit("mean_all", &[("hips_line", 44.0), ("crotch_hip_diff", 34.0), ("waist_line", 69.0)]);
     let err = BodyMesh::for_body("low.yaml", &bad).unwrap_err();
     assert!(err.to_string().starts_with("low.yaml: cannot make a mannequin: the crotch level"), "{err}");
+    let down = BodyMesh::for_body("down.yaml", &edit("mean_all", &[("arm_pose_angle", 90.0)])).unwrap_err();
+    assert!(down.to_string().starts_with("down.yaml: cannot make a mannequin: arm_pose_angle 90 is outside 0..85 degrees"), "{down}");
 }
 
 #[test]
