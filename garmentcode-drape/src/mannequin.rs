@@ -281,7 +281,7 @@ fn hull(mut p: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
     h
 }
 
-fn area(h: &Vec<[f64; 2]>) -> f64 {
+fn area(h: &[[f64; 2]]) -> f64 {
     (0..h.len()).map(|i| cross([0.0, 0.0], h[i], h[(i + 1) % h.len()])).sum::<f64>().abs() / 2.0
 }
 

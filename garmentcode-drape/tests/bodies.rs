@@ -82,6 +82,9 @@ fn edit(name: &str, changes: &[(&str, f64)]) -> Body {
     Body::from_yaml(&lines.join("\n"), "edited.yaml").unwrap()
 }
 
+/// A template mesh and its own self-crossing edges.
+type Crossings = (BodyMesh, Vec<(u32, u32)>);
+
 fn check_mannequin(label: &str, b: &Body) {
     let mesh = BodyMesh::for_body("other.yaml", b).unwrap();
     let m = measure(&mesh, b);
@@ -94,7 +97,7 @@ fn check_mannequin(label: &str, b: &Body) {
     // The reference's meshes cross themselves at the lips, between the fingers and the
     // thighs; the mannequin crosses itself nowhere else (within 3 cm of those, on the
     // template: same topology).
-    static TEMPLATES: std::sync::OnceLock<Vec<(BodyMesh, Vec<(u32, u32)>)>> = std::sync::OnceLock::new();
+    static TEMPLATES: std::sync::OnceLock<Vec<Crossings>> = std::sync::OnceLock::new();
     let templates = TEMPLATES.get_or_init(|| {
         ["mean_all", "mean_female", "mean_male"]
             .map(|n| {
