@@ -72,6 +72,9 @@ pub struct Measured {
     /// Arm extent along its axis, from where it meets the shoulder to the fingertips (the
     /// reference's shoulder-to-wrist length is shorter by the hand).
     pub arm_extent: f64,
+    /// Distance between the tops of the two arms' roots (where each arm meets the shoulder),
+    /// across the front: the ends of the collarbones.
+    pub shoulder_w: f64,
 }
 
 /// The landmark levels of a body file (cm above the floor).
@@ -149,6 +152,7 @@ impl Shape<'_> {
             hip_back_width: hips.back(),
             arm_pose_angle: angle,
             arm_extent: extent,
+            shoulder_w: arms.as_ref().map_or(f64::NAN, |a| (a[0].top.x - a[1].top.x).abs()),
         }
     }
 }
@@ -292,6 +296,8 @@ struct Arm {
     joint: Vec3,
     /// The ring's lowest point.
     pit: Vec3,
+    /// The ring's highest point.
+    top: Vec3,
     axis: Vec3,
 }
 
@@ -341,6 +347,7 @@ impl Arms {
             let ring: Vec<Vec3> = (0..ring.len()).filter(|&i| ring[i]).map(|i| body.vertices[i]).collect();
             let joint = ring.iter().copied().sum::<Vec3>() / ring.len().max(1) as f64;
             let pit = ring.iter().copied().min_by(|a, b| a.y.total_cmp(&b.y)).unwrap_or(joint);
+            let top = ring.iter().copied().max_by(|a, b| a.y.total_cmp(&b.y)).unwrap_or(joint);
             let centre = vertices.iter().map(|&i| body.vertices[i]).sum::<Vec3>() / vertices.len() as f64;
             // Principal axis by power iteration on the covariance, started along joint → centre.
             let mut cov = [[0.0; 3]; 3];
@@ -364,7 +371,7 @@ impl Arms {
             if axis.dot(centre - joint) < 0.0 {
                 axis = -axis;
             }
-            arms.push(Arm { vertices, joint, pit, axis });
+            arms.push(Arm { vertices, joint, pit, top, axis });
         }
         Some(arms)
     }
@@ -455,10 +462,14 @@ pub fn mannequin(b: &Body, name: &str) -> Result<BodyMesh, BodyError> {
     // Section knots (template heights above the floor) with their centres, and the joint level.
     let sec_levels = [from.crotch, from.hips, from.waist, from.underbust, from.bust, arms[0].joint.y - floor, from.nape];
     let centres: Vec<[f64; 2]> = sec_levels.iter().map(|&y| Section::torso(&shape, floor + y).centre()).collect();
-    let girth = |m: &Measured| [m.hips, m.hips, m.waist, m.underbust, m.bust, f64::NAN, m.neck_w];
-    let target = [b.hips, b.hips, b.waist, b.underbust, b.bust, f64::NAN, b.neck_w];
-    let tg = girth(&tm);
-    let mut scale: Vec<f64> = (0..7).map(|k| if k == 5 { b.shoulder_w / t.shoulder_w } else { target[k] / tg[k] }).collect();
+    // What each section factor is set by: girths and the shoulder width as the file gives
+    // them ([`measure`] agrees with the reference's definitions on its bodies); the neck as
+    // the file's `neck_w` relative to the template's (its back arc at the nape reads 0.2 to
+    // 2.6 cm more than the reference's files).
+    let widths = |m: &Measured| [m.hips, m.hips, m.waist, m.underbust, m.bust, m.shoulder_w, m.neck_w];
+    let tg = widths(&tm);
+    let target = [b.hips, b.hips, b.waist, b.underbust, b.bust, b.shoulder_w, b.neck_w / t.neck_w * tm.neck_w];
+    let mut scale: Vec<f64> = (0..7).map(|k| target[k] / tg[k]).collect();
     let arm_turn0 = b.arm_pose_angle - tm.arm_pose_angle;
     let mut arm_turn = arm_turn0;
     let arm_stretch = b.arm_length / t.arm_length;
@@ -523,9 +534,9 @@ pub fn mannequin(b: &Body, name: &str) -> Result<BodyMesh, BodyError> {
             return Ok(BodyMesh::new(name, vertices, base.faces.clone())?.with_part_bits(parts));
         }
         let m = Shape { vertices: &vertices, faces: &base.faces, parts: Some(&parts) }.measure(b);
-        let got = girth(&m);
+        let got = widths(&m);
         for k in 0..7 {
-            if k != 5 && got[k] > 0.0 {
+            if got[k] > 0.0 {
                 scale[k] *= target[k] / got[k];
             }
         }

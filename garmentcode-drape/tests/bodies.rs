@@ -32,6 +32,7 @@ fn pairs(m: &Measured, b: &Body) -> Vec<(&'static str, f64, f64)> {
         ("waist_back_width", m.waist_back_width, b.waist_back_width),
         ("hip_back_width", m.hip_back_width, b.hip_back_width),
         ("arm_pose_angle", m.arm_pose_angle, b.arm_pose_angle),
+        ("shoulder_w", m.shoulder_w, b.shoulder_w),
     ]
 }
 
@@ -82,6 +83,21 @@ fn edit(name: &str, changes: &[(&str, f64)]) -> Body {
     Body::from_yaml(&lines.join("\n"), "edited.yaml").unwrap()
 }
 
+/// The mean body a mannequin was made from (the nearest by height, bust, waist, hips), and
+/// its file.
+fn template_of(mesh: &BodyMesh, b: &Body) -> (BodyMesh, Body) {
+    let score = |t: &Body| {
+        [(b.height, t.height), (b.bust, t.bust), (b.waist, t.waist), (b.hips, t.hips)]
+            .iter()
+            .map(|(x, y)| (x / y - 1.0).powi(2))
+            .sum::<f64>()
+    };
+    let name = ["mean_all", "mean_female", "mean_male"].into_iter().min_by(|x, y| score(&body(x)).total_cmp(&score(&body(y)))).unwrap();
+    let t = BodyMesh::builtin(name).unwrap();
+    assert_eq!(t.faces, mesh.faces);
+    (t, body(name))
+}
+
 /// A template mesh and its own self-crossing edges.
 type Crossings = (BodyMesh, Vec<(u32, u32)>);
 
@@ -90,9 +106,14 @@ fn check_mannequin(label: &str, b: &Body) {
     let m = measure(&mesh, b);
     let line: Vec<String> = pairs(&m, b).iter().map(|(k, got, want)| format!("{k} {:+.2}", got - want)).collect();
     println!("{label}: {}", line.join(", "));
-    for (k, got, want) in &pairs(&m, b)[..6] {
+    for (k, got, want) in pairs(&m, b).iter().filter(|(k, _, _)| ["height", "bust", "underbust", "waist", "hips", "shoulder_w"].contains(k))
+    {
         assert!((got - want).abs() < 1.0, "{label}: {k} measured {got:.2}, file {want:.2}");
     }
+    // The neck's back arc reads more than the reference's files; against the template's.
+    let (t, tb) = template_of(&mesh, b);
+    let neck = m.neck_w / measure(&t, &tb).neck_w * tb.neck_w;
+    assert!((neck - b.neck_w).abs() < 1.0, "{label}: neck_w {neck:.2} (template-relative), file {:.2}", b.neck_w);
     assert!((m.arm_pose_angle - b.arm_pose_angle).abs() < 1.0, "{label}: arm angle {}", m.arm_pose_angle);
     // The reference's meshes cross themselves at the lips, between the fingers and the
     // thighs; the mannequin crosses itself nowhere else (within 3 cm of those, on the
