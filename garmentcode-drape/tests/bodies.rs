@@ -219,3 +219,15 @@ fn user_body_meshes_in_wrong_units_or_huge_are_refused() {
     assert!(matches!(err, BodyError::TooLarge { .. }) && err.to_string().starts_with(&format!("{}: file of", huge.display())), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn mannequins_of_the_smpl_files_and_of_large_and_slim_bodies() {
+    // The SMPL averages' files as any other body file (their arm_length of 80 cm included).
+    check_mannequin("f_smpl file", &body("f_smpl_average_A40"));
+    check_mannequin("m_smpl file", &body("m_smpl_average_A40"));
+    check_mannequin("large", &edit("mean_female", &[("bust", 130.0), ("underbust", 112.0), ("waist", 118.0), ("hips", 135.0)]));
+    check_mannequin(
+        "slim",
+        &edit("mean_male", &[("bust", 84.0), ("underbust", 76.0), ("waist", 66.0), ("hips", 86.0), ("shoulder_w", 35.0)]),
+    );
+}
