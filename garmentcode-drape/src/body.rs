@@ -35,6 +35,36 @@ pub const BUILTIN: [(&str, &[u8]); 5] = [
 /// The body parts of a segmentation, in the reference's order.
 pub const PARTS: [&str; 6] = ["body", "left_arm", "left_leg", "right_arm", "right_leg", "face_internal"];
 
+/// SMPL's vertex segmentation grouped into [`PARTS`]: the arm from the upper arm to the
+/// fingers, the leg from the thigh to the toes, the rest (head, neck, shoulders, spine, hips)
+/// the body.
+pub const SMPL_PARTS: [(&str, &str); 24] = [
+    ("head", "body"),
+    ("neck", "body"),
+    ("spine", "body"),
+    ("spine1", "body"),
+    ("spine2", "body"),
+    ("hips", "body"),
+    ("leftShoulder", "body"),
+    ("rightShoulder", "body"),
+    ("leftArm", "left_arm"),
+    ("leftForeArm", "left_arm"),
+    ("leftHand", "left_arm"),
+    ("leftHandIndex1", "left_arm"),
+    ("rightArm", "right_arm"),
+    ("rightForeArm", "right_arm"),
+    ("rightHand", "right_arm"),
+    ("rightHandIndex1", "right_arm"),
+    ("leftUpLeg", "left_leg"),
+    ("leftLeg", "left_leg"),
+    ("leftFoot", "left_leg"),
+    ("leftToeBase", "left_leg"),
+    ("rightUpLeg", "right_leg"),
+    ("rightLeg", "right_leg"),
+    ("rightFoot", "right_leg"),
+    ("rightToeBase", "right_leg"),
+];
+
 /// Plausible body heights (cm, after scaling): outside this the file is not a body in metres.
 pub const HEIGHT_RANGE: (f64, f64) = (30.0, 300.0);
 
@@ -360,15 +390,17 @@ impl BodyMesh {
 
     /// Adds the body's part segmentation, in the reference's format
     /// (`ggg_body_segmentation.json`: `{"body": [vertex ids], "left_arm": [...], ...}`, parts
-    /// among [`PARTS`]; other keys are ignored). `file` names the source in errors.
+    /// among [`PARTS`]) or SMPL's (`smpl_vert_segmentation.json`, its 24 parts grouped as
+    /// [`SMPL_PARTS`] says); other keys are ignored. `file` names the source in errors.
     pub fn with_parts_json(mut self, text: &str, file: &str) -> Result<BodyMesh, BodyError> {
         let parse = |reason: String| BodyError::Parse { file: file.to_string(), line: 1, reason };
         let value: serde_json::Value =
             serde_json::from_str(text).map_err(|e| BodyError::Parse { file: file.to_string(), line: e.line(), reason: e.to_string() })?;
         let map = value.as_object().ok_or_else(|| parse("the segmentation must be an object of part → vertex ids".into()))?;
         let mut parts = vec![0u8; self.vertices.len()];
-        for (bit, name) in PARTS.iter().enumerate() {
-            let Some(ids) = map.get(*name) else { continue };
+        for (name, ids) in map {
+            let part = SMPL_PARTS.iter().find(|(smpl, _)| smpl == name).map_or(name.as_str(), |(_, part)| part);
+            let Some(bit) = PARTS.iter().position(|p| *p == part) else { continue };
             let ids = ids.as_array().ok_or_else(|| parse(format!("part '{name}' must be a list of vertex ids")))?;
             for id in ids {
                 let i = id

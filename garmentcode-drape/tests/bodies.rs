@@ -231,3 +231,15 @@ fn mannequins_of_the_smpl_files_and_of_large_and_slim_bodies() {
         &edit("mean_male", &[("bust", 84.0), ("underbust", 76.0), ("waist", 66.0), ("hips", 86.0), ("shoulder_w", 35.0)]),
     );
 }
+
+#[test]
+fn smpl_segmentations_are_grouped_into_body_parts() {
+    let tetra = "v 0 0 0\nv 1 0 0\nv 0 1.7 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    let body = BodyMesh::from_obj(tetra, "t.obj").unwrap();
+    let seg = r#"{"leftForeArm": [0], "rightHandIndex1": [1], "spine2": [2], "rightToeBase": [3], "unknown": [0, 1]}"#;
+    let body = body.with_parts_json(seg, "seg.json").unwrap();
+    let bit = |name: &str| 1u8 << garmentcode_drape::body::PARTS.iter().position(|p| *p == name).unwrap();
+    assert_eq!(body.parts().unwrap(), [bit("left_arm"), bit("right_arm"), bit("body"), bit("right_leg")]);
+    let bad = BodyMesh::from_obj(tetra, "t.obj").unwrap().with_parts_json(r#"{"leftArm": [9]}"#, "seg.json").unwrap_err();
+    assert_eq!(bad.to_string(), "seg.json:1: part 'leftArm': 9 is not a vertex id (0..4)");
+}
