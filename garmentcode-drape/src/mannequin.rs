@@ -9,7 +9,7 @@
 //! nape levels and interpolated in between; both maps are monotone in every section, so they
 //! cannot make the surface cross itself. The arms move with their shoulder joint, turned to
 //! the file's `arm_pose_angle` and stretched to its `arm_length`, blended into the torso over
-//! the first centimetres of the arm. The girths are then measured back ([`measure`]) and the
+//! the first centimetres of the arm (by distance from the torso along the arm's surface). The girths are then measured back ([`measure`]) and the
 //! section factors corrected, a few times.
 //!
 //! Levels come from the file as the garment programs use them (cm above the floor): nape
@@ -34,8 +34,9 @@ pub const MAX_ARM_ANGLE: f64 = 85.0;
 /// Correction rounds of the section factors.
 const ROUNDS: usize = 5;
 
-/// Length (cm) along the arm over which the arm's motion blends into the torso's.
-const ARM_BLEND: f64 = 12.0;
+/// Distance (cm) from the torso, along the arm's surface, over which the arm's motion blends
+/// into the torso's.
+const ARM_BLEND: f64 = 20.0;
 
 /// The templates: the reference's mean bodies (meshes in [`crate::body::BUILTIN`]) and their
 /// measurement files.
@@ -323,12 +324,21 @@ impl Arms {
         let mut arms = Vec::new();
         for name in ["left_arm", "right_arm"] {
             let b = bit(name);
-            // The arm's vertices, with the few unsegmented ones (at the fingertips) next to it.
+            // The arm's vertices, with the few unsegmented ones that touch the arm and no other
+            // part (at the fingertips; those in the armpit stay with the torso).
             let mut in_arm: Vec<bool> = parts.iter().map(|p| p & b != 0).collect();
+            let mut touches_other = vec![false; parts.len()];
+            for f in body.faces {
+                if f.iter().any(|&i| parts[i as usize] != 0 && parts[i as usize] & b == 0) {
+                    f.iter().for_each(|&i| touches_other[i as usize] = true);
+                }
+            }
             for _ in 0..3 {
                 for f in body.faces {
                     if f.iter().any(|&i| in_arm[i as usize]) {
-                        f.iter().filter(|&&i| parts[i as usize] == 0).for_each(|&i| in_arm[i as usize] = true);
+                        f.iter()
+                            .filter(|&&i| parts[i as usize] == 0 && !touches_other[i as usize])
+                            .for_each(|&i| in_arm[i as usize] = true);
                     }
                 }
             }
@@ -375,6 +385,44 @@ impl Arms {
         }
         Some(arms)
     }
+}
+
+/// Distance (cm, along the mesh's edges) of each vertex of `region` from the vertices outside
+/// it: `(vertex, distance)` for every vertex of `region`.
+fn distance_into(body: &BodyMesh, region: &[usize]) -> Vec<(usize, f64)> {
+    use std::cmp::Reverse;
+    let mut inside = vec![false; body.vertices.len()];
+    region.iter().for_each(|&i| inside[i] = true);
+    let mut dist = vec![f64::INFINITY; body.vertices.len()];
+    let mut next: Vec<Vec<usize>> = vec![Vec::new(); body.vertices.len()];
+    for f in &body.faces {
+        for k in 0..3 {
+            let (a, b) = (f[k] as usize, f[(k + 1) % 3] as usize);
+            next[a].push(b);
+            next[b].push(a);
+            if inside[a] != inside[b] {
+                dist[if inside[a] { b } else { a }] = 0.0;
+            }
+        }
+    }
+    // Dijkstra from the outside vertices that touch the region (non-negative distances order
+    // as their bit patterns).
+    let mut heap: std::collections::BinaryHeap<Reverse<(u64, usize)>> =
+        (0..dist.len()).filter(|&i| dist[i] == 0.0).map(|i| Reverse((0u64, i))).collect();
+    while let Some(Reverse((d, i))) = heap.pop() {
+        let d = f64::from_bits(d);
+        if d > dist[i] {
+            continue;
+        }
+        for &j in &next[i] {
+            let e = d + (body.vertices[i] - body.vertices[j]).length();
+            if inside[j] && e < dist[j] {
+                dist[j] = e;
+                heap.push(Reverse((e.to_bits(), j)));
+            }
+        }
+    }
+    region.iter().map(|&i| (i, dist[i])).collect()
 }
 
 /// Piecewise-linear interpolation through `(xs[i], ys[i])`, `xs` increasing; constant outside.
@@ -451,11 +499,12 @@ pub fn mannequin(b: &Body, name: &str) -> Result<BodyMesh, BodyError> {
     let shape = Shape { vertices: &base.vertices, faces: &base.faces, parts: Some(&parts) };
     let arms = Arms::of(&shape).expect("the templates have a segmentation");
     let tm = shape.measure(&t);
-    // Per vertex: which arm (if any) and its blend weight.
+    // Per vertex: which arm (if any) and its blend weight, from its distance to the torso
+    // along the arm's surface.
     let mut arm_of: Vec<Option<(usize, f64)>> = vec![None; base.vertices.len()];
     for (k, arm) in arms.iter().enumerate() {
-        for &i in &arm.vertices {
-            let s = ((base.vertices[i] - arm.joint).dot(arm.axis) / ARM_BLEND).clamp(0.0, 1.0);
+        for (i, d) in distance_into(&base, &arm.vertices) {
+            let s = (d / ARM_BLEND).clamp(0.0, 1.0);
             arm_of[i] = Some((k, s * s * (3.0 - 2.0 * s)));
         }
     }
