@@ -4,13 +4,14 @@
 //! The reference ships meshes only for its five bodies; any other body file gets a
 //! mannequin: the nearest of the three `mean_*` bodies (same topology and part
 //! segmentation), deformed. Heights are mapped piecewise linearly between the landmark
-//! levels (floor, crotch, hips, waist, bust, nape, top of the head); horizontal sections are
-//! scaled about their centre by factors set at the bust, underbust, waist, hips, shoulder and
-//! nape levels and interpolated in between; both maps are monotone in every section, so they
-//! cannot make the surface cross itself. The arms move with their shoulder joint, turned to
-//! the file's `arm_pose_angle` and stretched to its `arm_length`, blended into the torso over
-//! the first centimetres of the arm (by distance from the torso along the arm's surface). The girths are then measured back ([`measure`]) and the
-//! section factors corrected, a few times.
+//! levels (floor, crotch, hips, waist, underbust, bust, nape, top of the head); horizontal
+//! sections are scaled about their centre by factors set at the hips, waist, underbust, bust,
+//! shoulder joint and nape levels and interpolated in between; both maps are monotone in
+//! every section, so they cannot make the surface cross itself. The arms move with the
+//! torso's side at the armpit, turned to the file's `arm_pose_angle` and stretched to its
+//! `arm_length`, blended into the torso over their first [`ARM_BLEND`] cm (distance from the
+//! torso along the surface). The girths, the shoulder width and the neck are then measured
+//! back ([`measure`]) and the section factors corrected, a few times.
 //!
 //! Levels come from the file as the garment programs use them (cm above the floor): nape
 //! `height − head_l`, bust `nape − vert_bust_line` (`bust_line` when absent), waist
@@ -24,8 +25,8 @@ use garmentcode::{Body, Vec3};
 use crate::body::{BodyError, BodyMesh, PARTS};
 
 /// The underbust level: this fraction of the way from the bust level down to the waist level
-/// (the reference defines it as "right below the bust"; on `mean_all` this reproduces its
-/// file's underbust within a centimetre).
+/// (the reference defines it as "right below the bust"; on the three mean bodies this
+/// reproduces their files' underbust within 0.5 cm).
 pub const UNDERBUST_FRACTION: f64 = 0.45;
 
 /// Largest arm angle (degrees below the horizontal) of a mannequin.
@@ -36,7 +37,7 @@ const ROUNDS: usize = 5;
 
 /// Distance (cm) from the torso, along the arm's surface, over which the arm's motion blends
 /// into the torso's.
-const ARM_BLEND: f64 = 20.0;
+pub const ARM_BLEND: f64 = 20.0;
 
 /// The templates: the reference's mean bodies (meshes in [`crate::body::BUILTIN`]) and their
 /// measurement files.
@@ -73,8 +74,8 @@ pub struct Measured {
     /// Arm extent along its axis, from where it meets the shoulder to the fingertips (the
     /// reference's shoulder-to-wrist length is shorter by the hand).
     pub arm_extent: f64,
-    /// Distance between the tops of the two arms' roots (where each arm meets the shoulder),
-    /// across the front: the ends of the collarbones.
+    /// Left-right distance between the highest points of the two arms' roots (where each arm
+    /// meets the shoulder): the outer ends of the collarbones.
     pub shoulder_w: f64,
 }
 
@@ -116,7 +117,8 @@ impl Levels {
 /// Measures a body mesh at the levels of the body file `levels` (its `height`, `head_l`,
 /// `waist_line`, `vert_bust_line`, `hips_line`, `crotch_hip_diff`): the levels are where the
 /// garment programs put the waistband, the bust line and the hip line, so the girths there
-/// are the ones a drape depends on. The floor is the mesh's lowest point.
+/// are the ones a drape depends on. The floor is the mesh's lowest point. The arm values
+/// (`arm_pose_angle`, `arm_extent`, `shoulder_w`) need a part segmentation: NaN without one.
 pub fn measure(body: &BodyMesh, levels: &Body) -> Measured {
     Shape { vertices: &body.vertices, faces: &body.faces, parts: body.parts() }.measure(levels)
 }
