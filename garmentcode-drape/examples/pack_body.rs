@@ -2,6 +2,10 @@
 //! compact form of the built-in bodies:
 //!
 //! `cargo run -p garmentcode-drape --example pack_body -- BODY.obj [SEGMENTATION.json] OUT.body`
+//!
+//! The built-in bodies are GarmentCode's `assets/bodies/NAME.obj`, with
+//! `ggg_body_segmentation.json` for `mean_*` and `smpl_vert_segmentation.json` for the SMPL
+//! averages.
 
 use garmentcode_drape::BodyMesh;
 

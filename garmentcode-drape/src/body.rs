@@ -19,13 +19,51 @@ const PACKED_MAGIC: &[u8; 8] = b"GCBODY1\0";
 /// Packed coordinates are integers in this unit (cm): 0.1 mm.
 const PACKED_UNIT: f64 = 0.01;
 
-/// The built-in bodies, packed: the reference's `mean_all` body mesh (23,752 vertices,
-/// 47,500 triangles) with its part segmentation (`ggg_body_segmentation.json`), 0.1 mm
-/// resolution. The reference's other bodies load from their OBJ files ([`BodyMesh::load`]).
-pub const BUILTIN: [(&str, &[u8]); 1] = [("mean_all", include_bytes!("../data/mean_all.body"))];
+/// The built-in bodies, packed at 0.1 mm resolution with their part segmentations: the
+/// reference's `mean_all`, `mean_female` and `mean_male` (23,752 vertices, 47,500 triangles,
+/// segmentation `ggg_body_segmentation.json`; MIT) and the SMPL averages `f_smpl_average_A40`,
+/// `m_smpl_average_A40` (6,890 vertices, 13,776 triangles, SMPL's vertex segmentation grouped
+/// into [`PARTS`]; CC BY 4.0). Other bodies get a mannequin ([`BodyMesh::for_body`]).
+pub const BUILTIN: [(&str, &[u8]); 5] = [
+    ("mean_all", include_bytes!("../data/mean_all.body")),
+    ("mean_female", include_bytes!("../data/mean_female.body")),
+    ("mean_male", include_bytes!("../data/mean_male.body")),
+    ("f_smpl_average_A40", include_bytes!("../data/f_smpl_average_A40.body")),
+    ("m_smpl_average_A40", include_bytes!("../data/m_smpl_average_A40.body")),
+];
 
 /// The body parts of a segmentation, in the reference's order.
 pub const PARTS: [&str; 6] = ["body", "left_arm", "left_leg", "right_arm", "right_leg", "face_internal"];
+
+/// SMPL's vertex segmentation grouped into [`PARTS`]: the arm from the upper arm to the
+/// fingers, the leg from the thigh to the toes, the rest (head, neck, shoulders, spine, hips)
+/// the body.
+pub const SMPL_PARTS: [(&str, &str); 24] = [
+    ("head", "body"),
+    ("neck", "body"),
+    ("spine", "body"),
+    ("spine1", "body"),
+    ("spine2", "body"),
+    ("hips", "body"),
+    ("leftShoulder", "body"),
+    ("rightShoulder", "body"),
+    ("leftArm", "left_arm"),
+    ("leftForeArm", "left_arm"),
+    ("leftHand", "left_arm"),
+    ("leftHandIndex1", "left_arm"),
+    ("rightArm", "right_arm"),
+    ("rightForeArm", "right_arm"),
+    ("rightHand", "right_arm"),
+    ("rightHandIndex1", "right_arm"),
+    ("leftUpLeg", "left_leg"),
+    ("leftLeg", "left_leg"),
+    ("leftFoot", "left_leg"),
+    ("leftToeBase", "left_leg"),
+    ("rightUpLeg", "right_leg"),
+    ("rightLeg", "right_leg"),
+    ("rightFoot", "right_leg"),
+    ("rightToeBase", "right_leg"),
+];
 
 /// Plausible body heights (cm, after scaling): outside this the file is not a body in metres.
 pub const HEIGHT_RANGE: (f64, f64) = (30.0, 300.0);
@@ -67,6 +105,14 @@ pub enum BodyError {
         /// The file.
         file: String,
         /// Which edges are open or shared by more than two triangles.
+        reason: String,
+    },
+    /// No mannequin can be made from the body's measurements.
+    #[error("{file}: cannot make a mannequin: {reason}")]
+    Mannequin {
+        /// The body file.
+        file: String,
+        /// Which measurements disagree.
         reason: String,
     },
     /// The mesh's height (y extent, after metres → cm) is implausible.
@@ -145,22 +191,20 @@ impl BodyMesh {
     }
 
     /// The body mesh to drape on for a body: the built-in mesh when `name` is a built-in
-    /// body that has one ([`BUILTIN`]), else a mesh made from `measurements`.
-    ///
-    /// Today only the built-in meshes exist: any other body is refused with a pointer to
-    /// `--body-mesh` (a mannequin made from the measurements is issue 24's next step).
+    /// body ([`BUILTIN`]), else a mannequin made from `measurements`
+    /// ([`crate::mannequin::mannequin`]; `name` names the body file in errors).
     pub fn for_body(name: &str, measurements: &garmentcode::Body) -> Result<BodyMesh, BodyError> {
-        let _ = measurements;
         if BUILTIN.iter().any(|(n, _)| *n == name) {
             return BodyMesh::builtin(name);
         }
-        Err(BodyError::Read {
-            file: name.to_string(),
-            reason: format!(
-                "no body mesh for this body (built in: {}); give one with --body-mesh FILE.obj",
-                BUILTIN.map(|(n, _)| n).join(", ")
-            ),
-        })
+        crate::mannequin::mannequin(measurements, name)
+    }
+
+    /// This body with the part bits of every vertex (one per entry of [`PARTS`]).
+    pub(crate) fn with_part_bits(mut self, parts: Vec<u8>) -> BodyMesh {
+        debug_assert_eq!(parts.len(), self.vertices.len());
+        self.parts = parts;
+        self
     }
 
     /// The compact form of this body (for [`BUILTIN`]): magic `GCBODY1\0`, vertex and
@@ -346,15 +390,17 @@ impl BodyMesh {
 
     /// Adds the body's part segmentation, in the reference's format
     /// (`ggg_body_segmentation.json`: `{"body": [vertex ids], "left_arm": [...], ...}`, parts
-    /// among [`PARTS`]; other keys are ignored). `file` names the source in errors.
+    /// among [`PARTS`]) or SMPL's (`smpl_vert_segmentation.json`, its 24 parts grouped as
+    /// [`SMPL_PARTS`] says); other keys are ignored. `file` names the source in errors.
     pub fn with_parts_json(mut self, text: &str, file: &str) -> Result<BodyMesh, BodyError> {
         let parse = |reason: String| BodyError::Parse { file: file.to_string(), line: 1, reason };
         let value: serde_json::Value =
             serde_json::from_str(text).map_err(|e| BodyError::Parse { file: file.to_string(), line: e.line(), reason: e.to_string() })?;
         let map = value.as_object().ok_or_else(|| parse("the segmentation must be an object of part → vertex ids".into()))?;
         let mut parts = vec![0u8; self.vertices.len()];
-        for (bit, name) in PARTS.iter().enumerate() {
-            let Some(ids) = map.get(*name) else { continue };
+        for (name, ids) in map {
+            let part = SMPL_PARTS.iter().find(|(smpl, _)| smpl == name).map_or(name.as_str(), |(_, part)| part);
+            let Some(bit) = PARTS.iter().position(|p| *p == part) else { continue };
             let ids = ids.as_array().ok_or_else(|| parse(format!("part '{name}' must be a list of vertex ids")))?;
             for id in ids {
                 let i = id
@@ -398,6 +444,30 @@ impl BodyMesh {
     /// Signed distance (cm) from `p` to the body surface: negative inside.
     pub fn signed_distance(&self, p: Vec3) -> f64 {
         self.closest(p, f64::INFINITY).map_or(f64::INFINITY, |h| h.signed)
+    }
+
+    /// The edges of the mesh (vertex pairs, 0-based) that cross one of its triangles (one
+    /// they do not belong to): none for a surface that does not pass through itself.
+    pub fn self_intersections(&self) -> Vec<(u32, u32)> {
+        let mut edges: Vec<(u32, u32)> =
+            self.faces.iter().flat_map(|f| [0, 1, 2].map(|k| (f[k].min(f[(k + 1) % 3]), f[k].max(f[(k + 1) % 3])))).collect();
+        edges.sort_unstable();
+        edges.dedup();
+        edges
+            .iter()
+            .filter(|&&(a, b)| {
+                let (p, q) = (self.vertices[a as usize], self.vertices[b as usize]);
+                let mut hit = false;
+                self.bvh.for_each_in_box(p.min(q), p.max(q), |f| {
+                    hit = hit
+                        || (!self.faces[f].contains(&a)
+                            && !self.faces[f].contains(&b)
+                            && crate::bvh::segment_crosses(p, q - p, &self.tris[f]).is_some())
+                });
+                hit
+            })
+            .copied()
+            .collect()
     }
 
     /// Whether segment `a`–`b` crosses the body surface.

@@ -24,6 +24,7 @@
 pub mod body;
 mod bvh;
 mod check;
+pub mod mannequin;
 mod parts;
 mod selfcol;
 pub mod solver;
