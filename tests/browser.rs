@@ -947,3 +947,49 @@ fn the_page_works_at_phone_width() {
 
     eprintln!("phone browser test passed in {:.1} s (screenshots in {})", started.elapsed().as_secs_f64(), scratch.display());
 }
+
+/// The body form: measurements in inches, a value outside its range marked as it is
+/// typed (and not taken), a plausible one taken and the drawing following, and the
+/// measuring guide's sentence and figure under a measurement.
+#[test]
+#[ignore = "needs chromium and chromedriver: GARMENTCODE_BROWSER_TEST=1 cargo test --test browser -- --ignored"]
+fn the_body_form_takes_inches_checks_ranges_and_shows_how_to_measure() {
+    let Some(Session { b, url, scratch, _server, .. }) = session("browser-body-form") else { return };
+    b.goto(&url);
+    b.wait_drawing("the first drawing", 0);
+    b.click(&b.find("#tab-body"));
+    let waist_cm = b.js("return Number(document.getElementById('m-waist').value)").as_f64().unwrap();
+    b.click(&b.find("#body-units option[value='in']"));
+    let waist_in = b.js("return Number(document.getElementById('m-waist').value)").as_f64().unwrap();
+    assert!((waist_in * 2.54 - waist_cm).abs() < 0.01, "{waist_in} in for {waist_cm} cm");
+    assert_eq!(b.js("return document.querySelector('.measure[data-name=waist] .unit').textContent"), json!("in"));
+    assert_eq!(b.js("return document.querySelector('.measure[data-name=shoulder_incl] .unit').textContent"), json!("°"));
+
+    // Out of range while typing: marked, explained, not taken.
+    let waist = b.find("#m-waist");
+    b.keys(&waist, "\u{E009}a\u{E000}900");
+    b.wait("the range message", 10, "return document.querySelector('.measure[data-name=waist]').classList.contains('invalid')");
+    let msg = b.js("return document.querySelector('.measure[data-name=waist] .problem').textContent");
+    assert_eq!(msg, json!("outside the plausible 15.75 to 86.61 in"));
+    b.keys(&waist, "\n");
+    assert!(b.js("return document.getElementById('m-waist').getAttribute('aria-invalid')") == json!("true"));
+
+    // A plausible value in inches is taken in cm, and the pattern follows.
+    let v = b.version();
+    b.keys(&waist, "\u{E009}a\u{E000}30\n");
+    b.wait_drawing("the pattern on the new waist", v);
+    assert_eq!(b.js("return document.querySelector('.measure[data-name=waist]').classList.contains('invalid')"), json!(false));
+    let taken = b.js("return Number(document.getElementById('m-waist').value)").as_f64().unwrap();
+    assert!((taken - 30.0).abs() < 1e-9, "{taken}");
+
+    // How to measure: the sentence and the figure, loaded when opened.
+    b.click(&b.find(".measure[data-name=hips] .how summary"));
+    b.wait(
+        "the guide's figure",
+        20,
+        "const img = document.querySelector('.measure[data-name=hips] .how img'); return !!img && img.complete && img.naturalWidth > 0",
+    );
+    let how = b.js("return document.querySelector('.measure[data-name=hips] .how p').textContent").as_str().unwrap().to_string();
+    assert!(how.contains("fullest part of the hips"), "{how}");
+    b.screenshot(&scratch.join("body-form.png"));
+}
