@@ -57,8 +57,11 @@ enum Content {
     /// Bytes made beforehand.
     Bytes(Vec<u8>),
     /// Bytes made while the file is written (large files: none held whole in memory).
-    Streamed(Box<dyn Fn(&mut dyn io::Write) -> io::Result<()>>),
+    Streamed(Box<WriteFn>),
 }
+
+/// Writes a file's bytes into the writer it is given.
+type WriteFn = dyn Fn(&mut dyn io::Write) -> io::Result<()>;
 
 /// Why an output folder was not written.
 #[derive(Debug)]
