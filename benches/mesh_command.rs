@@ -6,7 +6,8 @@
 //! in 10 ms ticks summed over the 11 runs) and their median wall-clock time; then the
 //! distribution over the cases beside the reference's median of 3.68 s of CPU to
 //! generate and serialise a box mesh (`BoxMesh(...).load()` and `serialize()`, shared
-//! reference FORMAT.md §11).
+//! reference FORMAT.md §11). First, the floor: the mean CPU time of `garmentcode
+//! --version` (start, parse the command line, exit) over 101 processes.
 //!
 //! `cargo bench --bench mesh_command`
 
@@ -28,6 +29,13 @@ fn main() {
     let root = std::env::var_os("GARMENTCODE_BENCH_DIR")
         .map_or_else(std::env::temp_dir, PathBuf::from)
         .join(format!("garmentcode-bench-mesh-command-{}", std::process::id()));
+    let ticks = children_ticks();
+    for _ in 0..101 {
+        let status = Command::new(env!("CARGO_BIN_EXE_garmentcode")).arg("--version").stdout(std::process::Stdio::null()).status();
+        assert!(status.expect("garmentcode runs").success());
+    }
+    let floor = (children_ticks() - ticks) as f64 / 100.0 / 101.0;
+    println!("garmentcode --version: {:.3} ms CPU (mean of 101 processes)", floor * 1e3);
     let (mut per, mut cpu) = (Vec::new(), Vec::new());
     for spec in &specs {
         let ticks = children_ticks();

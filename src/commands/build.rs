@@ -75,9 +75,7 @@ pub fn files(
     }
     if formats.contains(&BuildFormat::Mesh) {
         let mesh = BoxMesh::new(pattern, mesh_resolution).map_err(|e| format!("cannot mesh the pattern: {e}"))?;
-        for (file, bytes) in mesh.files() {
-            set.add(&file, bytes);
-        }
+        crate::commands::add_mesh(&mut set, mesh);
     }
     if formats.contains(&BuildFormat::Print) {
         for (file, bytes) in garmentcode::fabricate::files(pattern, print).map_err(|e| format!("cannot print: {e}"))? {

@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use crate::cli::MeshArgs;
-use crate::commands::{CliError, read_pattern, write_folder};
+use crate::commands::{CliError, add_mesh, read_pattern, write_folder};
 use crate::output::OutputSet;
 use garmentcode::mesh::BoxMesh;
 
@@ -37,19 +37,13 @@ pub fn run(args: MeshArgs) -> Result<i32, CliError> {
         return Err(CliError::Usage(format!("--name: '{}' is not a file name prefix", pattern.name)));
     }
     let mesh = BoxMesh::new(&pattern, args.resolution).map_err(|e| CliError::Input(format!("{file}: cannot mesh the pattern: {e}")))?;
+    let summary =
+        format!("{} vertices, {} of them on stitches, {} triangles", mesh.vertices.len(), mesh.n_stitch_vertices, mesh.faces.len());
     let mut set = OutputSet::default();
     set.add(&format!("{}_specification.json", pattern.name), pattern.to_json().map_err(|e| CliError::Input(format!("{file}: {e}")))?);
-    for (name, bytes) in mesh.files() {
-        set.add(&name, bytes);
-    }
+    add_mesh(&mut set, mesh);
     set.add_input(file);
     write_folder(&set, &args.out, args.force)?;
-    eprintln!(
-        "wrote {} ({} vertices, {} of them on stitches, {} triangles)",
-        args.out.display(),
-        mesh.vertices.len(),
-        mesh.n_stitch_vertices,
-        mesh.faces.len()
-    );
+    eprintln!("wrote {} ({summary})", args.out.display());
     Ok(0)
 }

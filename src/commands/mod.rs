@@ -88,6 +88,16 @@ pub fn png_drawing(pattern: &Pattern, opts: &garmentcode::draw::DrawOptions) -> 
     Ok(png.bytes)
 }
 
+/// Add a box mesh's files (streamed into the folder when it is written, none held
+/// whole in memory).
+pub fn add_mesh(set: &mut OutputSet, mesh: garmentcode::mesh::BoxMesh) {
+    let files = std::sync::Arc::new(garmentcode::mesh::write::MeshFiles::new(std::borrow::Cow::Owned(mesh)));
+    for (i, name) in files.names().into_iter().enumerate() {
+        let files = std::sync::Arc::clone(&files);
+        set.add_streamed(&name, move |out| files.write(i, out));
+    }
+}
+
 /// Write an output folder whole (see [`OutputSet::write_folder`]).
 pub fn write_folder(set: &OutputSet, dir: &Path, force: bool) -> Result<(), CliError> {
     set.write_folder(dir, force).map_err(|e| CliError::Input(format!("cannot write {}: {e}", dir.display())))

@@ -1,9 +1,11 @@
 //! The box mesh's files, laid out as the reference writes them, and readers for our own OBJ
 //! and segmentation files.
 
+use std::borrow::Cow;
 use std::fmt::Write as _;
-use std::io;
+use std::io::{self, Write};
 use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
 
 use super::{BoxMesh, VertexLabel};
 use crate::parity::float_repr::write_python_float;
@@ -24,36 +26,7 @@ impl BoxMesh {
     /// `<name>_boxmesh.obj`: `mtllib`, `v` (cm, Python float repr), `vt` (one per panel-local
     /// vertex), `s 1`, `usemtl panels_texture`, `f v/vt v/vt v/vt`.
     pub fn obj(&self) -> String {
-        self.obj_with(&Coordinates::new(&self.vertices), &self.texture_coordinates())
-    }
-
-    fn obj_with(&self, xyz: &Coordinates, uvs: &[Vec2]) -> String {
-        let mut out = String::with_capacity(xyz.text.len() + 3 * self.vertices.len() + 48 * uvs.len() + 48 * self.faces.len() + 100);
-        let _ = writeln!(out, "mtllib {}_material.mtl", self.file_prefix());
-        for v in 0..self.vertices.len() {
-            out.push_str("v ");
-            out.push_str(xyz.get(v));
-            out.push('\n');
-        }
-        for uv in uvs {
-            out.push_str("vt ");
-            write_python_float(&mut out, uv.x);
-            out.push(' ');
-            write_python_float(&mut out, uv.y);
-            out.push('\n');
-        }
-        out.push_str("s 1\nusemtl panels_texture\n");
-        for f in &self.faces {
-            out.push('f');
-            for k in 0..3 {
-                out.push(' ');
-                push_int(&mut out, f.vertices[k] + 1);
-                out.push('/');
-                push_int(&mut out, f.uvs[k] + 1);
-            }
-            out.push('\n');
-        }
-        out
+        self.text_file(OBJ)
     }
 
     /// Texture coordinates of every panel-local vertex (texture id order): each panel's 2D
@@ -83,15 +56,194 @@ impl BoxMesh {
     /// in a fabric colour on white, [`TEXTURE_SIZE`] pixels square. The reference draws
     /// its islands at 1,500 dpi (about 10 MB a garment); this one is a few kilobytes.
     pub fn texture_png(&self) -> Vec<u8> {
-        self.texture_png_with(&self.texture_coordinates())
+        self.file(PNG)
     }
 
-    fn texture_png_with(&self, uvs: &[Vec2]) -> Vec<u8> {
+    /// `<name>_material.mtl`.
+    pub fn material(&self) -> String {
+        self.text_file(MTL)
+    }
+
+    /// `<name>_sim_segmentation.txt`: one line per vertex.
+    pub fn segmentation(&self) -> String {
+        self.text_file(SEGMENTATION)
+    }
+
+    /// `<name>_orig_lens.pickle`: the rest lengths as a pickled `{(i, j): length}` dict
+    /// (protocol 2, written by hand: `}` then `(`, per item `J i J j \x86 G <f64 BE>`, `u`, `.`).
+    pub fn rest_lengths_pickle(&self) -> Vec<u8> {
+        self.file(PICKLE)
+    }
+
+    /// `<name>_vertex_labels.yaml`: `label:` then `- id` lines (block style), `{}` when empty.
+    pub fn vertex_labels_yaml(&self) -> String {
+        self.text_file(LABELS)
+    }
+
+    /// `<name>_sim_mesh.obj`: the welded mesh in metres, plain `v` and `f` lines.
+    pub fn welded_obj_metres(&self) -> String {
+        self.text_file(WELDED)
+    }
+
+    /// `<name>_boxmesh.ply` (ASCII, cm): per vertex `x y z segment stitch`, where `segment`
+    /// is the panel index (panels named in `comment panel <i> <name>` lines) or -1 for a
+    /// stitch vertex and `stitch` the first stitch of a stitch vertex (-1 otherwise).
+    pub fn ply(&self) -> String {
+        self.text_file(PLY)
+    }
+
+    /// The files, named `<name><suffix>` (suffixes in [`FILE_SUFFIXES`]): the reference's
+    /// (OBJ, material, segmentation, rest lengths, vertex labels), the welded metre OBJ, the
+    /// PLY and the texture the material names. [`MeshFiles`] writes the same bytes into
+    /// any writer without holding them.
+    pub fn files(&self) -> Vec<(String, Vec<u8>)> {
+        let files = MeshFiles::new(Cow::Borrowed(self));
+        files.names().into_iter().enumerate().map(|(i, name)| (name, files.bytes(i))).collect()
+    }
+
+    /// Writes the files of [`BoxMesh::files`] into `dir`, each streamed straight into its
+    /// file; returns the paths written.
+    pub fn write_files(&self, dir: &Path) -> io::Result<Vec<PathBuf>> {
+        std::fs::create_dir_all(dir)?;
+        let files = MeshFiles::new(Cow::Borrowed(self));
+        let mut written = Vec::new();
+        for (i, name) in files.names().into_iter().enumerate() {
+            let path = dir.join(name);
+            files.write(i, &mut std::fs::File::create(&path)?)?;
+            written.push(path);
+        }
+        Ok(written)
+    }
+
+    /// File `index` (of [`FILE_SUFFIXES`]) in memory.
+    fn file(&self, index: usize) -> Vec<u8> {
+        MeshFiles::new(Cow::Borrowed(self)).bytes(index)
+    }
+
+    /// A text file (`index` of [`FILE_SUFFIXES`]) in memory.
+    fn text_file(&self, index: usize) -> String {
+        // Every text file is laid out from `str` pieces.
+        String::from_utf8(self.file(index)).expect("mesh text files are UTF-8")
+    }
+}
+
+/// Indices of the files in [`FILE_SUFFIXES`].
+const OBJ: usize = 0;
+const MTL: usize = 1;
+const SEGMENTATION: usize = 2;
+const PICKLE: usize = 3;
+const LABELS: usize = 4;
+const WELDED: usize = 5;
+const PLY: usize = 6;
+const PNG: usize = 7;
+
+/// How many bytes of a file are laid out in memory before they are handed to its writer.
+const CHUNK: usize = 256 * 1024;
+
+/// The files of a box mesh (the mesh borrowed or owned), written one at a time into any
+/// writer ([`MeshFiles::write`]) through one buffer of a few hundred kilobytes, so that
+/// no file's whole text is held in memory. What two files share (the vertices' `x y z`
+/// text of the OBJ and the PLY, the texture coordinates of the OBJ and the texture) is
+/// made once, when first needed.
+pub struct MeshFiles<'a> {
+    mesh: Cow<'a, BoxMesh>,
+    xyz: OnceLock<Coordinates>,
+    uvs: OnceLock<Vec<Vec2>>,
+}
+
+impl<'a> MeshFiles<'a> {
+    /// The files of `mesh` (`Cow::Borrowed(&mesh)`, or `Cow::Owned(mesh)` for files that
+    /// outlive the caller's mesh).
+    pub fn new(mesh: Cow<'a, BoxMesh>) -> MeshFiles<'a> {
+        MeshFiles { mesh, xyz: OnceLock::new(), uvs: OnceLock::new() }
+    }
+
+    /// The mesh.
+    pub fn mesh(&self) -> &BoxMesh {
+        &self.mesh
+    }
+
+    /// The file names, `<name><suffix>` for each of [`FILE_SUFFIXES`], in that order.
+    pub fn names(&self) -> Vec<String> {
+        let prefix = self.mesh.file_prefix();
+        FILE_SUFFIXES.iter().map(|suffix| format!("{prefix}{suffix}")).collect()
+    }
+
+    /// Writes file `index` (of [`FILE_SUFFIXES`]) into `out`, a chunk at a time.
+    ///
+    /// # Panics
+    /// If `index` is not below `FILE_SUFFIXES.len()`.
+    pub fn write(&self, index: usize, out: &mut dyn Write) -> io::Result<()> {
+        let mut text = Chunked { buf: String::with_capacity(CHUNK + 4096), out };
+        match index {
+            OBJ => self.obj(&mut text)?,
+            MTL => self.material(&mut text),
+            SEGMENTATION => self.segmentation(&mut text)?,
+            PICKLE => return self.rest_lengths_pickle(text.out),
+            LABELS => self.vertex_labels_yaml(&mut text)?,
+            WELDED => self.welded_obj_metres(&mut text)?,
+            PLY => self.ply(&mut text)?,
+            PNG => return text.out.write_all(&self.texture_png()),
+            _ => panic!("a box mesh has {} files, not {}", FILE_SUFFIXES.len(), index + 1),
+        }
+        text.finish()
+    }
+
+    /// File `index` in memory.
+    fn bytes(&self, index: usize) -> Vec<u8> {
+        let mut out = Vec::new();
+        // Writing into memory cannot fail.
+        self.write(index, &mut out).expect("mesh files in memory");
+        out
+    }
+
+    fn xyz(&self) -> &Coordinates {
+        self.xyz.get_or_init(|| Coordinates::new(&self.mesh.vertices))
+    }
+
+    fn uvs(&self) -> &[Vec2] {
+        self.uvs.get_or_init(|| self.mesh.texture_coordinates())
+    }
+
+    fn obj(&self, text: &mut Chunked) -> io::Result<()> {
+        let (m, xyz) = (&*self.mesh, self.xyz());
+        let _ = writeln!(text.buf, "mtllib {}_material.mtl", m.file_prefix());
+        for v in 0..m.vertices.len() {
+            text.buf.push_str("v ");
+            text.buf.push_str(xyz.get(v));
+            text.buf.push('\n');
+            text.line_end()?;
+        }
+        for uv in self.uvs() {
+            text.buf.push_str("vt ");
+            write_python_float(&mut text.buf, uv.x);
+            text.buf.push(' ');
+            write_python_float(&mut text.buf, uv.y);
+            text.buf.push('\n');
+            text.line_end()?;
+        }
+        text.buf.push_str("s 1\nusemtl panels_texture\n");
+        for f in &m.faces {
+            text.buf.push('f');
+            for k in 0..3 {
+                text.buf.push(' ');
+                push_int(&mut text.buf, f.vertices[k] + 1);
+                text.buf.push('/');
+                push_int(&mut text.buf, f.uvs[k] + 1);
+            }
+            text.buf.push('\n');
+            text.line_end()?;
+        }
+        Ok(())
+    }
+
+    fn texture_png(&self) -> Vec<u8> {
         const FABRIC: [u8; 3] = [0xd8, 0xc8, 0xb0];
+        let uvs = self.uvs();
         let n = TEXTURE_SIZE;
         let mut rgb = vec![0xffu8; 3 * n * n];
         let scale = n as f64;
-        for f in &self.faces {
+        for f in &self.mesh.faces {
             // Image rows run down, texture v up.
             let [a, b, c] = f.uvs.map(|t| Vec2::new(uvs[t].x * scale, (1.0 - uvs[t].y) * scale));
             let area = (b - a).perp_dot(c - a);
@@ -124,167 +276,158 @@ impl BoxMesh {
         out
     }
 
-    /// `<name>_material.mtl`.
-    pub fn material(&self) -> String {
-        format!(
+    fn material(&self, text: &mut Chunked) {
+        let _ = write!(
+            text.buf,
             "newmtl panels_texture\nNs 0.000000\nKa 1.000000 1.000000 1.000000\nKs 0.000000 0.000000 0.000000\n\
              Ke 0.000000 0.000000 0.000000\nNi 1.000000\nd 1.000000\nillum 1\nmap_Kd {}_texture_fabric.png\n",
-            self.file_prefix()
-        )
+            self.mesh.file_prefix()
+        );
     }
 
-    /// `<name>_sim_segmentation.txt`: one line per vertex.
-    pub fn segmentation(&self) -> String {
-        let mut out = String::with_capacity(24 * self.vertices.len());
-        for label in &self.labels {
+    fn segmentation(&self, text: &mut Chunked) -> io::Result<()> {
+        let m = &*self.mesh;
+        for label in &m.labels {
             match label {
                 VertexLabel::Stitch(ks) => {
                     for (i, k) in ks.iter().enumerate() {
-                        out.push_str(if i == 0 { "stitch_" } else { ",stitch_" });
-                        push_int(&mut out, *k);
+                        text.buf.push_str(if i == 0 { "stitch_" } else { ",stitch_" });
+                        push_int(&mut text.buf, *k);
                     }
                 }
-                VertexLabel::Panel(p) => out.push_str(&self.panels[*p].name),
+                VertexLabel::Panel(p) => text.buf.push_str(&m.panels[*p].name),
             }
-            out.push('\n');
+            text.buf.push('\n');
+            text.line_end()?;
         }
-        out
+        Ok(())
     }
 
-    /// `<name>_orig_lens.pickle`: the rest lengths as a pickled `{(i, j): length}` dict
-    /// (protocol 2, written by hand: `}` then `(`, per item `J i J j \x86 G <f64 BE>`, `u`, `.`).
-    pub fn rest_lengths_pickle(&self) -> Vec<u8> {
-        let mut out = Vec::with_capacity(16 + 20 * self.rest_lengths.len());
-        out.extend_from_slice(&[0x80, 2, b'}']);
-        for chunk in self.rest_lengths.chunks(1000) {
-            out.push(b'(');
+    fn rest_lengths_pickle(&self, out: &mut dyn Write) -> io::Result<()> {
+        let lengths = &self.mesh.rest_lengths;
+        let mut buf = Vec::with_capacity((16 + 20 * lengths.len()).min(CHUNK + 4096));
+        buf.extend_from_slice(&[0x80, 2, b'}']);
+        for chunk in lengths.chunks(1000) {
+            buf.push(b'(');
             for ([i, j], len) in chunk {
                 for id in [i, j] {
-                    out.push(b'J');
-                    out.extend_from_slice(&(*id as i32).to_le_bytes());
+                    buf.push(b'J');
+                    buf.extend_from_slice(&(*id as i32).to_le_bytes());
                 }
-                out.push(0x86);
-                out.push(b'G');
-                out.extend_from_slice(&len.to_be_bytes());
+                buf.push(0x86);
+                buf.push(b'G');
+                buf.extend_from_slice(&len.to_be_bytes());
             }
-            out.push(b'u');
+            buf.push(b'u');
+            if buf.len() >= CHUNK {
+                out.write_all(&buf)?;
+                buf.clear();
+            }
         }
-        out.push(b'.');
-        out
+        buf.push(b'.');
+        out.write_all(&buf)
     }
 
-    /// `<name>_vertex_labels.yaml`: `label:` then `- id` lines (block style), `{}` when empty.
-    pub fn vertex_labels_yaml(&self) -> String {
-        if self.vertex_labels.is_empty() {
-            return "{}\n".into();
+    fn vertex_labels_yaml(&self, text: &mut Chunked) -> io::Result<()> {
+        let labels = &self.mesh.vertex_labels;
+        if labels.is_empty() {
+            text.buf.push_str("{}\n");
         }
-        let mut out = String::new();
-        for (label, ids) in &self.vertex_labels {
-            let _ = writeln!(out, "{}:", yaml_key(label));
+        for (label, ids) in labels {
+            let _ = writeln!(text.buf, "{}:", yaml_key(label));
             if ids.is_empty() {
-                out.pop();
-                out.push_str(" []\n");
+                text.buf.pop();
+                text.buf.push_str(" []\n");
             }
             for id in ids {
-                out.push_str("- ");
-                push_int(&mut out, *id);
-                out.push('\n');
+                text.buf.push_str("- ");
+                push_int(&mut text.buf, *id);
+                text.buf.push('\n');
+                text.line_end()?;
             }
         }
-        out
+        Ok(())
     }
 
-    /// `<name>_sim_mesh.obj`: the welded mesh in metres, plain `v` and `f` lines.
-    pub fn welded_obj_metres(&self) -> String {
-        let mut out = String::with_capacity(72 * self.vertices.len() + 24 * self.faces.len());
-        for v in &self.vertices {
-            out.push_str("v ");
-            push_xyz(&mut out, *v / 100.0);
+    fn welded_obj_metres(&self, text: &mut Chunked) -> io::Result<()> {
+        let m = &*self.mesh;
+        for v in &m.vertices {
+            text.buf.push_str("v ");
+            push_xyz_line(&mut text.buf, *v / 100.0);
+            text.buf.push('\n');
+            text.line_end()?;
         }
-        for f in &self.faces {
-            out.push('f');
+        for f in &m.faces {
+            text.buf.push('f');
             for v in f.vertices {
-                out.push(' ');
-                push_int(&mut out, v + 1);
+                text.buf.push(' ');
+                push_int(&mut text.buf, v + 1);
             }
-            out.push('\n');
+            text.buf.push('\n');
+            text.line_end()?;
         }
-        out
+        Ok(())
     }
 
-    /// `<name>_boxmesh.ply` (ASCII, cm): per vertex `x y z segment stitch`, where `segment`
-    /// is the panel index (panels named in `comment panel <i> <name>` lines) or -1 for a
-    /// stitch vertex and `stitch` the first stitch of a stitch vertex (-1 otherwise).
-    pub fn ply(&self) -> String {
-        self.ply_with(&Coordinates::new(&self.vertices))
-    }
-
-    fn ply_with(&self, xyz: &Coordinates) -> String {
-        let mut out = String::with_capacity(xyz.text.len() + 16 * self.vertices.len() + 24 * self.faces.len() + 1000);
-        out.push_str("ply\nformat ascii 1.0\ncomment garmentcode box mesh, cm\n");
-        for (i, p) in self.panels.iter().enumerate() {
-            let _ = writeln!(out, "comment panel {i} {}", p.name);
+    fn ply(&self, text: &mut Chunked) -> io::Result<()> {
+        let (m, xyz) = (&*self.mesh, self.xyz());
+        text.buf.push_str("ply\nformat ascii 1.0\ncomment garmentcode box mesh, cm\n");
+        for (i, p) in m.panels.iter().enumerate() {
+            let _ = writeln!(text.buf, "comment panel {i} {}", p.name);
+            text.line_end()?;
         }
         let _ = write!(
-            out,
+            text.buf,
             "element vertex {}\nproperty double x\nproperty double y\nproperty double z\nproperty int segment\nproperty int stitch\n\
              element face {}\nproperty list uchar int vertex_indices\nend_header\n",
-            self.vertices.len(),
-            self.faces.len()
+            m.vertices.len(),
+            m.faces.len()
         );
-        for (v, label) in self.labels.iter().enumerate() {
+        for (v, label) in m.labels.iter().enumerate() {
             let (segment, stitch) = match label {
                 VertexLabel::Stitch(ks) => (-1, ks.first().map_or(-1, |&k| k as i64)),
                 VertexLabel::Panel(p) => (*p as i64, -1),
             };
-            out.push_str(xyz.get(v));
-            out.push(' ');
-            out.push_str(itoa::Buffer::new().format(segment));
-            out.push(' ');
-            out.push_str(itoa::Buffer::new().format(stitch));
-            out.push('\n');
+            text.buf.push_str(xyz.get(v));
+            text.buf.push(' ');
+            text.buf.push_str(itoa::Buffer::new().format(segment));
+            text.buf.push(' ');
+            text.buf.push_str(itoa::Buffer::new().format(stitch));
+            text.buf.push('\n');
+            text.line_end()?;
         }
-        for f in &self.faces {
-            out.push('3');
+        for f in &m.faces {
+            text.buf.push('3');
             for v in f.vertices {
-                out.push(' ');
-                push_int(&mut out, v);
+                text.buf.push(' ');
+                push_int(&mut text.buf, v);
             }
-            out.push('\n');
+            text.buf.push('\n');
+            text.line_end()?;
         }
-        out
+        Ok(())
+    }
+}
+
+/// A text file being written: laid out in `buf`, handed to `out` a chunk at a time.
+struct Chunked<'w> {
+    buf: String,
+    out: &'w mut dyn Write,
+}
+
+impl Chunked<'_> {
+    /// After a line: hands the text on once a chunk's worth is laid out.
+    fn line_end(&mut self) -> io::Result<()> {
+        if self.buf.len() >= CHUNK {
+            self.out.write_all(self.buf.as_bytes())?;
+            self.buf.clear();
+        }
+        Ok(())
     }
 
-    /// The files, named `<name><suffix>` (suffixes in [`FILE_SUFFIXES`]): the reference's
-    /// (OBJ, material, segmentation, rest lengths, vertex labels), the welded metre OBJ, the
-    /// PLY and the texture the material names.
-    pub fn files(&self) -> Vec<(String, Vec<u8>)> {
-        let name = self.file_prefix();
-        // Shared by the OBJ and the PLY, and by the OBJ and the texture.
-        let (xyz, uvs) = (Coordinates::new(&self.vertices), self.texture_coordinates());
-        let bytes = [
-            self.obj_with(&xyz, &uvs).into_bytes(),
-            self.material().into_bytes(),
-            self.segmentation().into_bytes(),
-            self.rest_lengths_pickle(),
-            self.vertex_labels_yaml().into_bytes(),
-            self.welded_obj_metres().into_bytes(),
-            self.ply_with(&xyz).into_bytes(),
-            self.texture_png_with(&uvs),
-        ];
-        FILE_SUFFIXES.iter().zip(bytes).map(|(suffix, b)| (format!("{name}{suffix}"), b)).collect()
-    }
-
-    /// Writes [`BoxMesh::files`] into `dir`; returns the paths written.
-    pub fn write_files(&self, dir: &Path) -> io::Result<Vec<PathBuf>> {
-        std::fs::create_dir_all(dir)?;
-        let mut written = Vec::new();
-        for (name, bytes) in self.files() {
-            let path = dir.join(name);
-            std::fs::write(&path, bytes)?;
-            written.push(path);
-        }
-        Ok(written)
+    /// Hands the rest on.
+    fn finish(self) -> io::Result<()> {
+        self.out.write_all(self.buf.as_bytes())
     }
 }
 
@@ -336,11 +479,6 @@ fn push_xyz_line(out: &mut String, v: Vec3) {
     write_python_float(out, v.y);
     out.push(' ');
     write_python_float(out, v.z);
-}
-
-fn push_xyz(out: &mut String, v: Vec3) {
-    push_xyz_line(out, v);
-    out.push('\n');
 }
 
 /// A YAML mapping key as PyYAML dumps a string: plain when unambiguous, else single-quoted.

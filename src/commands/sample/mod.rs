@@ -575,9 +575,7 @@ fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<
             if opts.formats.mesh {
                 let mesh = garmentcode::mesh::BoxMesh::new(&built.pattern, garmentcode::mesh::DEFAULT_RESOLUTION)
                     .map_err(|e| CliError::Failed(format!("{name}: cannot mesh the pattern: {e}")))?;
-                for (file, bytes) in mesh.files() {
-                    set.add(&file, bytes);
-                }
+                crate::commands::add_mesh(&mut set, mesh);
             }
             set.add("checks.json", built.checks.to_json());
         }
