@@ -252,7 +252,8 @@ pub struct BuildArgs {
     pub strict: bool,
     /// What to write besides the pattern and its inputs: `svg` and `png` drawings and
     /// the simulation box `mesh` (NAME_boxmesh.obj and the files `garmentcode mesh`
-    /// writes); `json` (the pattern, design, body and checks) is always written.
+    /// writes), `print`, `drape` (the mesh and the drape files of `garmentcode drape`; exit
+    /// status 3 when the drape did not settle); `json` (the pattern, design, body and checks) is always written.
     #[arg(long, value_enum, value_delimiter = ',', value_name = "FORMATS", default_value = "json,svg,png")]
     pub formats: Vec<BuildFormat>,
     /// Do not draw pattern.png (the same as leaving `png` out of --formats).
@@ -261,6 +262,12 @@ pub struct BuildArgs {
     /// Spacing of the mesh's boundary vertices in cm, with `--formats ...,mesh`.
     #[arg(long, value_name = "CM", default_value_t = 1.0, value_parser = positive_cm)]
     pub mesh_resolution: f64,
+    /// With `--formats ...,drape`: the body mesh to drape on (OBJ, closed, metres, y up) instead of the built-in mesh of --body.
+    #[arg(long, value_name = "FILE.obj")]
+    pub body_mesh: Option<PathBuf>,
+    /// With `--formats ...,drape`: fabric, frame and time limits.
+    #[command(flatten)]
+    pub sim: SimArgs,
     /// Drawing layout.
     #[arg(short, long, value_enum, default_value_t = LayoutArg::Placed)]
     pub layout: LayoutArg,
@@ -285,6 +292,8 @@ pub enum BuildFormat {
     Mesh,
     /// The printable pattern (as `garmentcode print` writes it with its defaults).
     Print,
+    /// The garment draped on the body, with the mesh (as `garmentcode drape` writes it).
+    Drape,
 }
 
 /// `garmentcode drape`.
@@ -302,18 +311,12 @@ pub struct DrapeArgs {
     /// The body mesh to drape on (OBJ, closed, metres, y up), instead of the built-in mesh of --body.
     #[arg(long, value_name = "FILE.obj")]
     pub body_mesh: Option<PathBuf>,
-    /// Fabric: a built-in fabric (default, mid_bending, minimal_bending) or a fabric file (.yaml).
-    #[arg(long, value_name = "NAME|FILE.yaml", default_value = "default", value_parser = NameOrFile(|| garmentcode_drape::fabric::BUILTIN.to_vec()), hide_possible_values = true)]
-    pub fabric: String,
+    /// Fabric, frame and time limits.
+    #[command(flatten)]
+    pub sim: SimArgs,
     /// Spacing of the mesh's boundary vertices in cm.
     #[arg(short, long, value_name = "CM", default_value_t = 1.0, value_parser = positive_cm)]
     pub resolution: f64,
-    /// Most frames simulated (60 a second; the reference's 2400 by default).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=garmentcode_drape::solver::MAX_FRAMES as i64))]
-    pub max_frames: Option<u32>,
-    /// Most seconds the simulation may take (the reference's 600 by default); then it stops, unsettled.
-    #[arg(long, value_name = "S", default_value_t = 600.0, value_parser = positive_seconds)]
-    pub max_seconds: f64,
     /// File name prefix (default: from the specification's file name, or the design's name).
     #[arg(long)]
     pub name: Option<String>,
@@ -323,6 +326,26 @@ pub struct DrapeArgs {
     /// Replace an output folder that holds files garmentcode did not write.
     #[arg(short, long)]
     pub force: bool,
+}
+
+/// Options of a drape (`drape`, and `build`/`sample` with the `drape` format).
+#[derive(Args, Debug, Clone)]
+pub struct SimArgs {
+    /// Fabric: a built-in fabric (default, mid_bending, minimal_bending) or a fabric file (.yaml).
+    #[arg(long, value_name = "NAME|FILE.yaml", default_value = "default", value_parser = NameOrFile(|| garmentcode_drape::fabric::BUILTIN.to_vec()), hide_possible_values = true)]
+    pub fabric: String,
+    /// Most frames simulated (60 a second; the reference's 2400 by default).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=garmentcode_drape::solver::MAX_FRAMES as i64))]
+    pub max_frames: Option<u32>,
+    /// Most seconds a simulation may take (the reference's 600 by default); then it stops, unsettled.
+    #[arg(long, value_name = "S", default_value_t = 600.0, value_parser = positive_seconds)]
+    pub max_seconds: f64,
+}
+
+impl Default for SimArgs {
+    fn default() -> SimArgs {
+        SimArgs { fabric: "default".into(), max_frames: None, max_seconds: 600.0 }
+    }
 }
 
 fn positive_seconds(s: &str) -> Result<f64, String> {
@@ -469,7 +492,7 @@ pub struct SampleArgs {
     /// Only the samples i with i % K == I (0 <= I < K).
     #[arg(long, value_name = "I/K")]
     pub shard: Option<String>,
-    /// Files per sample: a list of json, svg, png, mesh (the simulation box mesh at 1 cm; default json; with --replay json,svg,png).
+    /// Files per sample: a list of json, svg, png, mesh (the simulation box mesh at 1 cm), drape (the mesh and the garment draped on its body, as `garmentcode drape` writes it; a failed drape is recorded in the summary) (default json; with --replay json,svg,png).
     #[arg(long, value_name = "LIST")]
     pub formats: Option<String>,
     /// Rebuild one sample, or one attempt of it, into DIR as `build` would.
@@ -481,6 +504,9 @@ pub struct SampleArgs {
     /// Unpack shards into DIR as the folder layout (a folder per sample, and the dataset's summary when the shards come from one folder).
     #[arg(long, value_name = "SHARD.tar", num_args = 1.., conflicts_with_all = ["n", "replay", "layout", "shard", "design_space", "bodies", "formats", "jobs"])]
     pub unpack: Vec<PathBuf>,
+    /// With `--formats ...,drape`: fabric, frame and time limits of every drape.
+    #[command(flatten)]
+    pub sim: SimArgs,
 }
 
 /// `garmentcode serve`.

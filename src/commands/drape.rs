@@ -238,7 +238,7 @@ impl ProgressLine {
 
 pub fn run(args: DrapeArgs) -> Result<i32, CliError> {
     let (measurements, body_label) = load_body(&args.body)?;
-    let fabric = load_fabric(&args.fabric)?;
+    let fabric = load_fabric(&args.sim.fabric)?;
     if let Some(name) = &args.name {
         garmentcode::io::check_name("--name", name).map_err(|e| CliError::Usage(e.to_string()))?;
     }
@@ -271,8 +271,8 @@ pub fn run(args: DrapeArgs) -> Result<i32, CliError> {
         body_source: &body_source,
         measurements: (&measurements, &body_label),
         fabric: &fabric,
-        max_frames: args.max_frames.map(|n| n as usize),
-        max_seconds: args.max_seconds,
+        max_frames: args.sim.max_frames.map(|n| n as usize),
+        max_seconds: args.sim.max_seconds,
     };
     let mut progress = ProgressLine::new(args.quiet);
     let draped = drape_files(&pattern, &mesh, &setup, |p| progress.frame(p));
@@ -282,7 +282,7 @@ pub fn run(args: DrapeArgs) -> Result<i32, CliError> {
     for (name, bytes) in mesh.files().into_iter().chain(draped.files) {
         set.add(&name, bytes);
     }
-    for input in [Some(args.garment.as_str()), Some(args.body.as_str()), Some(args.fabric.as_str())].into_iter().flatten() {
+    for input in [Some(args.garment.as_str()), Some(args.body.as_str()), Some(args.sim.fabric.as_str())].into_iter().flatten() {
         set.add_input(input);
     }
     if let Some(f) = &args.body_mesh {
