@@ -48,6 +48,7 @@ struct Options {
     formats: Formats,
     replay: Option<(u64, Option<u32>)>,
     layout: Layout,
+    sim: crate::cli::SimArgs,
 }
 
 /// `--layout`: a folder per sample, or tar shards of so many samples.
@@ -99,6 +100,7 @@ impl Options {
             formats,
             replay,
             layout,
+            sim: args.sim,
         })
     }
 }
@@ -137,7 +139,8 @@ fn parse_formats(s: &str) -> Result<Formats, CliError> {
             "svg" => f.svg = true,
             "png" => f.png = true,
             "mesh" => f.mesh = true,
-            other => return Err(usage(format!("sample --formats: unknown format '{other}' (expected a list of json, svg, png, mesh)"))),
+            "drape" => f.drape = true,
+            other => return Err(usage(format!("sample --formats: unknown format '{other}' (expected a list of json, svg, png, mesh, drape)"))),
         }
     }
     Ok(f)
@@ -257,7 +260,18 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>, quiet: bool) 
         prepare_out(&opts.out)?;
     }
 
-    let settings = Settings::new(&sampler, opts.formats);
+    let drape = match opts.formats.drape {
+        true => Some((crate::commands::drape::load_fabric(&opts.sim.fabric)?, opts.sim.max_frames.map(|n| n as usize), opts.sim.max_seconds)),
+        false => None,
+    };
+    let settings = Settings::new(&sampler, opts.formats, drape);
+    if let Some(config) = &settings.drape {
+        for (b, meshes) in config.meshes.iter().enumerate() {
+            if let Err(e) = &meshes[0] {
+                note(format_args!("warning: body {}: {e}; its samples' drapes fail (recorded as body_mesh)", body_names[b]));
+            }
+        }
+    }
     let (shard_i, shard_k) = opts.shard.unwrap_or((0, 1));
     let wanted = |i: u64| i % shard_k == shard_i;
     let start = Instant::now();
@@ -359,7 +373,7 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>, quiet: bool) 
                 Ok(())
             };
             // Finished samples wait in memory with their files: a few megabytes each with meshes.
-            let queue = if opts.formats.mesh { jobs } else { 16 * jobs };
+            let queue = if opts.formats.mesh || opts.formats.drape { jobs } else { 16 * jobs };
             pool(jobs, queue, slots, todo, index_of, work, collect, report.take())?;
             (resumed, jobs, writer)
         }
@@ -396,6 +410,9 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>, quiet: bool) 
         tally.samples(),
         tally.rejected(),
     ));
+    if opts.formats.drape && tally.failed_drapes() > 0 {
+        note(format_args!("{} drape(s) failed (kept with their other files; by reason in the summary)", tally.failed_drapes()));
+    }
     if !failed.is_empty() {
         let shown: Vec<&str> = failed.iter().take(10).map(String::as_str).collect();
         return Err(CliError::Failed(format!(
