@@ -89,7 +89,11 @@ impl Fabric {
             _ => {
                 return Err(FabricError {
                     file: name.into(),
-                    problems: vec![format!("no built-in fabric of that name{} (built-in: {})", did_you_mean(name, &BUILTIN), BUILTIN.join(", "))],
+                    problems: vec![format!(
+                        "no built-in fabric of that name{} (built-in: {})",
+                        did_you_mean(name, &BUILTIN),
+                        BUILTIN.join(", ")
+                    )],
                 });
             }
         };
@@ -107,7 +111,9 @@ impl Fabric {
         let mut fabric = Fabric::default();
         if let Some(base) = pairs.iter().find(|(k, _)| k.as_str() == Some("base")).map(|(_, v)| v) {
             let at = format!("line {}: base", base.line);
-            let Some(b) = base.as_str() else { return Err(fail(format!("{at}: must be a built-in fabric's name ({})", BUILTIN.join(", ")))) };
+            let Some(b) = base.as_str() else {
+                return Err(fail(format!("{at}: must be a built-in fabric's name ({})", BUILTIN.join(", "))));
+            };
             fabric = Fabric::builtin(b).map_err(|e| fail(format!("{at}: {}", e.problems.join("; "))))?;
         }
         fabric.name = name;
@@ -142,10 +148,8 @@ impl Fabric {
             };
             match value {
                 Some(x) if x.is_finite() && (lo..=hi).contains(&x) => fabric.set(key, x),
-                _ => problems.push(format!(
-                    "{at}: fabric.{key} = {}: the {what} must be a number from {lo} to {hi}",
-                    yaml::to_string(v).trim_end()
-                )),
+                _ => problems
+                    .push(format!("{at}: fabric.{key} = {}: the {what} must be a number from {lo} to {hi}", yaml::to_string(v).trim_end())),
             }
         }
         if problems.is_empty() { Ok(fabric) } else { Err(FabricError { file: file.into(), problems }) }
@@ -236,7 +240,12 @@ mod tests {
         let e = Fabric::from_yaml("fabric:\n  spring_ke: -5\n  fabric_frictoin: 0.3\n  fabric_density: .nan\n", "bad.yaml").unwrap_err();
         let text = e.to_string();
         assert!(text.starts_with("bad.yaml: "), "{text}");
-        assert!(text.contains("line 2: fabric.spring_ke = -5: the stretch stiffness of the fabric's edges must be a number from 10 to 10000000"), "{text}");
+        assert!(
+            text.contains(
+                "line 2: fabric.spring_ke = -5: the stretch stiffness of the fabric's edges must be a number from 10 to 10000000"
+            ),
+            "{text}"
+        );
         assert!(text.contains("line 3: fabric.fabric_frictoin: unknown fabric parameter (did you mean `fabric_friction`?)"), "{text}");
         assert!(text.contains("line 4: fabric.fabric_density = .nan"), "{text}");
         assert!(Fabric::from_yaml("spring_ke: 5\n", "flat.yaml").unwrap_err().to_string().contains("top-level `fabric:`"));

@@ -35,8 +35,8 @@ mod strain;
 pub use body::{BodyError, BodyMesh};
 pub use fabric::{Fabric, FabricError};
 pub use glb::glb;
-pub use strain::Strain;
 pub use solver::{Attachment, Drape, DrapeError, Next, Progress, Settings, Stats, drape, drape_with_progress};
+pub use strain::Strain;
 
 use garmentcode::Vec3;
 use garmentcode::mesh::BoxMesh;

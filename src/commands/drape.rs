@@ -114,14 +114,7 @@ pub fn drape_files(
 }
 
 /// `NAME_drape.json`.
-fn report_json(
-    mesh: &BoxMesh,
-    x: &[garmentcode::Vec3],
-    stats: &Stats,
-    fails: &[&str],
-    s: &Settings,
-    setup: &DrapeSetup,
-) -> String {
+fn report_json(mesh: &BoxMesh, x: &[garmentcode::Vec3], stats: &Stats, fails: &[&str], s: &Settings, setup: &DrapeSetup) -> String {
     let strain = Strain::of(mesh, x);
     let (lo, hi) = setup.body.bounds();
     let attachments: Vec<Value> = s
@@ -134,8 +127,9 @@ fn report_json(
             })
         })
         .collect();
-    let fabric: serde_json::Map<String, Value> =
-        std::iter::once(("name".to_string(), json!(setup.fabric.name))).chain(setup.fabric.values().map(|(k, v)| (k.to_string(), json!(v)))).collect();
+    let fabric: serde_json::Map<String, Value> = std::iter::once(("name".to_string(), json!(setup.fabric.name)))
+        .chain(setup.fabric.values().map(|(k, v)| (k.to_string(), json!(v))))
+        .collect();
     let v = json!({
         "name": mesh.file_prefix(),
         "converged": stats.converged,
@@ -250,8 +244,8 @@ pub fn run(args: DrapeArgs) -> Result<i32, CliError> {
         p
     } else {
         let (design, label) = load_design(&args.garment)?;
-        let built = garments::build::build(&design, &measurements, &label)
-            .map_err(|e| CliError::Input(format!("{label} on {body_label}: {e}")))?;
+        let built =
+            garments::build::build(&design, &measurements, &label).map_err(|e| CliError::Input(format!("{label} on {body_label}: {e}")))?;
         for w in built.checks.warnings() {
             eprintln!("warning: {}", crate::explain_warning(&w));
         }
@@ -264,8 +258,8 @@ pub fn run(args: DrapeArgs) -> Result<i32, CliError> {
         return Err(CliError::Usage(format!("--name: '{}' is not a file name prefix", pattern.name)));
     }
     let (body, body_source) = load_body_mesh(args.body_mesh.as_deref(), &body_label, &measurements)?;
-    let mesh = BoxMesh::new(&pattern, args.resolution)
-        .map_err(|e| CliError::Input(format!("{}: cannot mesh the pattern: {e}", args.garment)))?;
+    let mesh =
+        BoxMesh::new(&pattern, args.resolution).map_err(|e| CliError::Input(format!("{}: cannot mesh the pattern: {e}", args.garment)))?;
     let setup = DrapeSetup {
         body: &body,
         body_source: &body_source,
@@ -278,7 +272,10 @@ pub fn run(args: DrapeArgs) -> Result<i32, CliError> {
     let draped = drape_files(&pattern, &mesh, &setup, |p| progress.frame(p));
     progress.finish();
     let draped = draped.map_err(|e| CliError::Input(format!("{}: cannot drape on {}: {e}", args.garment, body.name)))?;
-    set.add(&format!("{}_specification.json", pattern.name), pattern.to_json().map_err(|e| CliError::Input(format!("{}: {e}", args.garment)))?);
+    set.add(
+        &format!("{}_specification.json", pattern.name),
+        pattern.to_json().map_err(|e| CliError::Input(format!("{}: {e}", args.garment)))?,
+    );
     for (name, bytes) in mesh.files().into_iter().chain(draped.files) {
         set.add(&name, bytes);
     }

@@ -140,7 +140,9 @@ fn parse_formats(s: &str) -> Result<Formats, CliError> {
             "png" => f.png = true,
             "mesh" => f.mesh = true,
             "drape" => f.drape = true,
-            other => return Err(usage(format!("sample --formats: unknown format '{other}' (expected a list of json, svg, png, mesh, drape)"))),
+            other => {
+                return Err(usage(format!("sample --formats: unknown format '{other}' (expected a list of json, svg, png, mesh, drape)")));
+            }
         }
     }
     Ok(f)
@@ -261,7 +263,9 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>, quiet: bool) 
     }
 
     let drape = match opts.formats.drape {
-        true => Some((crate::commands::drape::load_fabric(&opts.sim.fabric)?, opts.sim.max_frames.map(|n| n as usize), opts.sim.max_seconds)),
+        true => {
+            Some((crate::commands::drape::load_fabric(&opts.sim.fabric)?, opts.sim.max_frames.map(|n| n as usize), opts.sim.max_seconds))
+        }
         false => None,
     };
     let settings = Settings::new(&sampler, opts.formats, drape);

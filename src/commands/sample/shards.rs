@@ -58,7 +58,10 @@ fn folder_file_name(key: &str, rest: &str) -> String {
 
 /// Whether `rest` is the suffix (without its `_`) of a mesh or drape file.
 fn mesh_file(rest: &str) -> bool {
-    garmentcode::mesh::write::FILE_SUFFIXES.iter().chain(&garmentcode_drape::FILE_SUFFIXES).any(|suffix| suffix.strip_prefix('_') == Some(rest))
+    garmentcode::mesh::write::FILE_SUFFIXES
+        .iter()
+        .chain(&garmentcode_drape::FILE_SUFFIXES)
+        .any(|suffix| suffix.strip_prefix('_') == Some(rest))
 }
 
 /// Split a member name into its sample index, key and suffix. The suffix is one

@@ -33,7 +33,11 @@ pub struct Formats {
 impl Formats {
     /// The names, in a fixed order.
     pub fn names(&self) -> Vec<&'static str> {
-        [(self.json, "json"), (self.svg, "svg"), (self.png, "png"), (self.mesh, "mesh"), (self.drape, "drape")].into_iter().filter(|f| f.0).map(|f| f.1).collect()
+        [(self.json, "json"), (self.svg, "svg"), (self.png, "png"), (self.mesh, "mesh"), (self.drape, "drape")]
+            .into_iter()
+            .filter(|f| f.0)
+            .map(|f| f.1)
+            .collect()
     }
 
     /// Files a finished sample has for these formats (a drape's own files only when it
@@ -291,7 +295,11 @@ fn files_of(s: &Settings, sample: &Sample, record: &mut Record) -> Result<Files,
                     record.drape = Some(match outcome {
                         Ok(draped) => {
                             files.extend(draped.files);
-                            DrapeRecord { fails: draped.fails.iter().map(|f| f.to_string()).collect(), message: None, frames: draped.stats.frames as u64 }
+                            DrapeRecord {
+                                fails: draped.fails.iter().map(|f| f.to_string()).collect(),
+                                message: None,
+                                frames: draped.stats.frames as u64,
+                            }
                         }
                         Err((reason, message)) => DrapeRecord { fails: vec![reason.into()], message: Some(message), frames: 0 },
                     });
@@ -300,7 +308,8 @@ fn files_of(s: &Settings, sample: &Sample, record: &mut Record) -> Result<Files,
             // A failed drape is recorded and the sample kept; without a drape the mesh is
             // what was asked for, and its failure the run's.
             (Err(e), Some(_)) => {
-                record.drape = Some(DrapeRecord { fails: vec!["meshgen".into()], message: Some(format!("cannot mesh the pattern: {e}")), frames: 0 })
+                record.drape =
+                    Some(DrapeRecord { fails: vec!["meshgen".into()], message: Some(format!("cannot mesh the pattern: {e}")), frames: 0 })
             }
             (Err(e), None) => return Err(format!("{name}: cannot mesh the pattern: {e}")),
         }
