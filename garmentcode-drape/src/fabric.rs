@@ -142,14 +142,15 @@ impl Fabric {
                 continue;
             }
             seen.push(key);
-            let value = match (&v.value, v.as_f64()) {
-                (Y::Bool(_), _) | (Y::Str(_), _) | (Y::Null, _) | (Y::Seq(_), _) | (Y::Map(_), _) => None,
-                (_, x) => x,
+            // YAML 1.1 reads `1e5` (no dot) as text: taken as the number it spells.
+            let value = match &v.value {
+                Y::Int(_) | Y::Float(_) => v.as_f64(),
+                Y::Str(t) => t.trim().parse::<f64>().ok(),
+                _ => None,
             };
             match value {
                 Some(x) if x.is_finite() && (lo..=hi).contains(&x) => fabric.set(key, x),
-                _ => problems
-                    .push(format!("{at}: fabric.{key} = {}: the {what} must be a number from {lo} to {hi}", yaml::to_string(v).trim_end())),
+                _ => problems.push(format!("{at}: fabric.{key} = {}: the {what} must be a number from {lo} to {hi}", source_text(text, v))),
             }
         }
         if problems.is_empty() { Ok(fabric) } else { Err(FabricError { file: file.into(), problems }) }
@@ -185,6 +186,21 @@ impl Fabric {
             base_mass: self.thickness,
             fabric_friction: self.friction,
             ..settings
+        }
+    }
+}
+
+/// The text of a scalar value as the file writes it (its line from its column, without a
+/// comment), or the kind of a collection.
+fn source_text(text: &str, v: &yaml::Node) -> String {
+    match &v.value {
+        Y::Seq(_) => "a list".into(),
+        Y::Map(_) => "a mapping".into(),
+        _ => {
+            let line = text.lines().nth((v.line as usize).saturating_sub(1)).unwrap_or("");
+            let rest: String = line.chars().skip((v.col as usize).saturating_sub(1)).collect();
+            let rest = rest.split(" #").next().unwrap_or("").trim();
+            if rest.is_empty() { "nothing".into() } else { rest.chars().take(40).collect() }
         }
     }
 }
@@ -229,10 +245,11 @@ mod tests {
 
     #[test]
     fn a_file_overrides_its_base() {
-        let f = Fabric::from_yaml("fabric:\n  base: mid_bending\n  fabric_friction: 0.3\n", "silk.yaml").unwrap();
-        assert_eq!((f.name.as_str(), f.bend_ke, f.friction), ("silk", 100.0, 0.3));
+        let f =
+            Fabric::from_yaml("fabric:\n  base: mid_bending\n  fabric_friction: 0.3\n  spring_ke: 1e5 # stiffer\n", "silk.yaml").unwrap();
+        assert_eq!((f.name.as_str(), f.bend_ke, f.friction, f.spring_ke), ("silk", 100.0, 0.3, 1e5));
         let s = f.apply(Settings::default());
-        assert_eq!((s.bend_ke, s.fabric_friction, s.spring_ke), (100.0, 0.3, 5e4));
+        assert_eq!((s.bend_ke, s.fabric_friction, s.spring_ke), (100.0, 0.3, 1e5));
     }
 
     #[test]

@@ -11,7 +11,10 @@ use garmentcode::mesh::BoxMesh;
 use serde_json::{Value, json};
 
 use crate::BodyMesh;
-use crate::render::{garment_faces, vertex_normals};
+use crate::render::{BODY, GARMENT, garment_faces, vertex_normals};
+
+/// A mesh of the file: name, vertices (cm), triangles, colour, whether double-sided.
+type Object<'a> = (&'a str, &'a [Vec3], &'a [[u32; 3]], [f64; 3], bool);
 
 /// glTF component types and buffer targets.
 const FLOAT: u32 = 5126;
@@ -27,10 +30,9 @@ const ELEMENT_ARRAY_BUFFER: u32 = 34963;
 pub fn glb(mesh: &BoxMesh, positions: &[Vec3], body: Option<&BodyMesh>) -> Vec<u8> {
     assert_eq!(positions.len(), mesh.vertices.len(), "one position per box-mesh vertex");
     let faces = garment_faces(mesh);
-    let mut objects: Vec<(&str, &[Vec3], &[[u32; 3]], [f64; 4], bool)> =
-        vec![("garment", positions, &faces, [0.636, 0.435, 0.048, 1.0], true)];
+    let mut objects: Vec<Object> = vec![("garment", positions, &faces, GARMENT, true)];
     if let Some(b) = body {
-        objects.push(("body", &b.vertices, &b.faces, [0.78, 0.78, 0.8, 1.0], false));
+        objects.push(("body", &b.vertices, &b.faces, BODY, false));
     }
     let mut bin: Vec<u8> = Vec::new();
     let (mut views, mut accessors, mut meshes, mut nodes, mut materials) = (vec![], vec![], vec![], vec![], vec![]);
@@ -61,7 +63,7 @@ pub fn glb(mesh: &BoxMesh, positions: &[Vec3], body: Option<&BodyMesh>) -> Vec<u
         accessors.push(json!({ "bufferView": iv, "componentType": UNSIGNED_INT, "count": tris.len() * 3, "type": "SCALAR" }));
         materials.push(json!({
             "name": name,
-            "pbrMetallicRoughness": { "baseColorFactor": color, "metallicFactor": 0.0, "roughnessFactor": 0.9 },
+            "pbrMetallicRoughness": { "baseColorFactor": [color[0], color[1], color[2], 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.9 },
             "doubleSided": double_sided,
         }));
         meshes.push(json!({
@@ -83,12 +85,8 @@ pub fn glb(mesh: &BoxMesh, positions: &[Vec3], body: Option<&BodyMesh>) -> Vec<u
         "buffers": [{ "byteLength": bin.len() }],
     });
     let mut text = serde_json::to_vec(&doc).expect("a JSON value serialises");
-    while text.len() % 4 != 0 {
-        text.push(b' ');
-    }
-    while bin.len() % 4 != 0 {
-        bin.push(0);
-    }
+    text.resize(text.len().next_multiple_of(4), b' ');
+    bin.resize(bin.len().next_multiple_of(4), 0);
     let total = 12 + 8 + text.len() + 8 + bin.len();
     let mut out = Vec::with_capacity(total);
     out.extend_from_slice(b"glTF");

@@ -27,11 +27,14 @@ pub enum Side {
 pub const SIZE: u32 = 800;
 
 /// Garment colour (linear RGB, 0–1): the reference's ochre render colour.
-const GARMENT: [f64; 3] = [0.636, 0.435, 0.048];
+pub(crate) const GARMENT: [f64; 3] = [0.636, 0.435, 0.048];
 /// Body colour.
-const BODY: [f64; 3] = [0.78, 0.78, 0.8];
+pub(crate) const BODY: [f64; 3] = [0.78, 0.78, 0.8];
 /// Share of the frame left empty around the meshes, each side.
 const MARGIN: f64 = 0.04;
+
+/// A mesh to draw: vertices, triangles, colour.
+type Layer<'a> = (&'a [Vec3], &'a [[u32; 3]], [f64; 3]);
 
 /// Area-weighted vertex normals of a triangle mesh (unit; +y for a vertex of no area).
 pub(crate) fn vertex_normals(positions: &[Vec3], faces: &[[u32; 3]]) -> Vec<Vec3> {
@@ -59,7 +62,7 @@ pub(crate) fn garment_faces(mesh: &BoxMesh) -> Vec<[u32; 3]> {
 pub fn render_png(mesh: &BoxMesh, positions: &[Vec3], body: Option<&BodyMesh>, side: Side) -> Vec<u8> {
     assert_eq!(positions.len(), mesh.vertices.len(), "one position per box-mesh vertex");
     let garment_faces = garment_faces(mesh);
-    let mut layers: Vec<(&[Vec3], &[[u32; 3]], [f64; 3])> = vec![(positions, &garment_faces, GARMENT)];
+    let mut layers: Vec<Layer> = vec![(positions, &garment_faces, GARMENT)];
     if let Some(b) = body {
         layers.push((&b.vertices, &b.faces, BODY));
     }
@@ -157,4 +160,33 @@ fn encode_rgb(rgb: &[u8], width: u32, height: u32) -> Vec<u8> {
     writer.write_image_data(rgb).expect("PNG data of the declared size");
     writer.finish().expect("PNG into memory");
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Decoded RGB pixels of a PNG.
+    fn pixels(png_bytes: &[u8]) -> (u32, u32, Vec<u8>) {
+        let mut reader = png::Decoder::new(std::io::Cursor::new(png_bytes)).read_info().unwrap();
+        let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+        let info = reader.next_frame(&mut buf).unwrap();
+        (info.width, info.height, buf[..info.buffer_size()].to_vec())
+    }
+
+    #[test]
+    fn the_garment_is_drawn_shaded_on_white_and_deterministically() {
+        let spec = include_str!("../tests/data/waistband_specification.json");
+        let mesh = BoxMesh::new(&garmentcode::Pattern::from_json(spec).unwrap(), 1.0).unwrap();
+        let png = render_png(&mesh, &mesh.vertices, None, Side::Front);
+        assert_eq!(png, render_png(&mesh, &mesh.vertices, None, Side::Front));
+        let (w, h, rgb) = pixels(&png);
+        assert_eq!((w, h), (SIZE, SIZE));
+        let at = |x: u32, y: u32| &rgb[3 * (y * w + x) as usize..3 * (y * w + x) as usize + 3];
+        assert_eq!(at(0, 0), [255, 255, 255], "background");
+        // The band fills the frame's width: its middle row crosses cloth (ochre: red > blue).
+        let row = h / 2;
+        let cloth = (0..w).filter(|&x| at(x, row)[0] > at(x, row)[2] + 40).count();
+        assert!(cloth > w as usize / 2, "{cloth} cloth pixels in the middle row");
+    }
 }

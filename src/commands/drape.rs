@@ -211,7 +211,7 @@ impl ProgressLine {
 
     /// Shows frame `p` when due.
     pub fn frame(&mut self, p: &Progress) {
-        if self.quiet || p.frame % 50 != 0 {
+        if self.quiet || !p.frame.is_multiple_of(50) {
             return;
         }
         let line = format!("drape: frame {}/{} ({} vertices moving)", p.frame, p.max_frames, p.non_static_vertices);
