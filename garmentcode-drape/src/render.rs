@@ -186,7 +186,7 @@ mod tests {
         assert_eq!(at(0, 0), [255, 255, 255], "background");
         // The band fills the frame's width: its middle row crosses cloth (ochre: red > blue).
         let row = h / 2;
-        let cloth = (0..w).filter(|&x| at(x, row)[0] > at(x, row)[2] + 40).count();
+        let cloth = (0..w).filter(|&x| i32::from(at(x, row)[0]) > i32::from(at(x, row)[2]) + 40).count();
         assert!(cloth > w as usize / 2, "{cloth} cloth pixels in the middle row");
     }
 }
