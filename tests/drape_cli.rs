@@ -220,7 +220,7 @@ fn bad_input_is_a_clear_error_and_nothing_is_written() {
     std::fs::write(dir.join("typo.yaml"), "fabric:\n  garment_edg_ke: 5\n").unwrap();
     let zero_area = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/hardening/spec-zero-area-panel.json");
     let zero_area = zero_area.to_str().unwrap();
-    let cases: [(Vec<&str>, &[&str]); 8] = [
+    let cases: [(Vec<&str>, &[&str]); 9] = [
         (vec![zero_area], &["spec-zero-area-panel.json", "cannot mesh the pattern"]),
         (vec![&spec, "--body-mesh", "open.obj"], &["open.obj", "must be a closed surface"]),
         (vec![&spec, "--body-mesh", "nan.obj"], &["nan.obj:2", "not finite"]),
@@ -232,6 +232,7 @@ fn bad_input_is_a_clear_error_and_nothing_is_written() {
         (vec![&spec, "--fabric", "typo.yaml"], &["typo.yaml: line 2: fabric.garment_edg_ke", "did you mean `garment_edge_ke`"]),
         (vec![&spec, "--fabric", "mid-bending"], &["mid-bending", "did you mean mid_bending", "default, mid_bending, minimal_bending"]),
         (vec![&spec, "--max-frames", "0"], &["--max-frames"]),
+        (vec![&spec, "--fabric", "/dev/zero"], &["/dev/zero", "larger than 64 MB"]),
     ];
     for (args, expected) in cases {
         let mut all = vec!["drape"];
