@@ -291,6 +291,12 @@ fn sample_drapes_in_both_layouts_and_records_failures() {
         assert_eq!(files_of(&dir.join("unpacked").join(&key)), files_of(&dir.join("folders").join(&key)));
     }
 
+    // A replay drapes too.
+    let o = run(&["sample", "--seed", "5", "--replay", "1", "--formats", "json,drape", "--max-frames", "2", "--out", "replay"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert_eq!(json(&dir.join("replay/rand_0000001_drape.json"))["frames"], 2);
+    assert!(dir.join("replay/rand_0000001_sim.glb").is_file());
+
     // A body without a mesh (until mannequins are made from measurements): the drape fails
     // as `body_mesh`, with its message; the sample keeps its other files.
     std::fs::write(dir.join("tall.yaml"), "body:\n  base: mean_all\n  height: 180\n").unwrap();

@@ -561,6 +561,36 @@ fn unpack(shards: &[PathBuf], out: &Path) -> Result<i32, CliError> {
     Ok(0)
 }
 
+/// The drape files of a replayed sample (`--formats ...,drape`) on its body's mesh; returns
+/// the drape's failure reasons.
+fn replay_drape(
+    set: &mut OutputSet,
+    opts: &Options,
+    pattern: &garmentcode::Pattern,
+    mesh: &garmentcode::mesh::BoxMesh,
+    body: (&garmentcode::Body, &str),
+) -> Result<Vec<&'static str>, CliError> {
+    use crate::commands::drape;
+    let fabric = drape::load_fabric(&opts.sim.fabric)?;
+    let (body_mesh, source) = drape::load_body_mesh(None, body.1, body.0)?;
+    let setup = drape::DrapeSetup {
+        body: &body_mesh,
+        body_source: &source,
+        measurements: body,
+        fabric: &fabric,
+        max_frames: opts.sim.max_frames.map(|n| n as usize),
+        max_seconds: opts.sim.max_seconds,
+    };
+    let mut progress = drape::ProgressLine::new(false);
+    let draped = drape::drape_files(pattern, mesh, &setup, |p| progress.frame(p));
+    progress.finish();
+    let draped = draped.map_err(|e| CliError::Failed(format!("{}: cannot drape on {}: {e}", pattern.name, body.1)))?;
+    for (file, bytes) in draped.files {
+        set.add(&file, bytes);
+    }
+    Ok(draped.fails)
+}
+
 /// `--replay INDEX[:ATTEMPT]`: rebuild one sample (or one attempt of it, accepted
 /// or rejected) into `--out` as `garmentcode build` would, with its checks.
 fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<u32>) -> Result<i32, CliError> {
@@ -593,11 +623,23 @@ fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<
                 crate::commands::add_drawings(&mut set, &built.pattern, opts.formats.png, garmentcode::draw::Layout::Placed)
                     .map_err(|e| CliError::Failed(e.to_string()))?;
             }
-            if opts.formats.mesh {
+            if opts.formats.mesh || opts.formats.drape {
                 let mesh = garmentcode::mesh::BoxMesh::new(&built.pattern, garmentcode::mesh::DEFAULT_RESOLUTION)
                     .map_err(|e| CliError::Failed(format!("{name}: cannot mesh the pattern: {e}")))?;
                 for (file, bytes) in mesh.files() {
                     set.add(&file, bytes);
+                }
+                if opts.formats.drape {
+                    let fails = replay_drape(
+                        &mut set,
+                        opts,
+                        &built.pattern,
+                        &mesh,
+                        (&sampler.body_for(body, &design), &sampler.bodies()[body].name),
+                    )?;
+                    if !fails.is_empty() {
+                        eprintln!("{name}: the drape failed the reference's checks: {}", fails.join(", "));
+                    }
                 }
             }
             set.add("checks.json", built.checks.to_json());
