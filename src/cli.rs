@@ -80,7 +80,7 @@ NAME_sim.glb (glTF 2.0, metres, with the body), NAME_drape.json (frames, time, c
 penetrations, self-intersections, seam and fabric strain, the settings, body and fabric) and \
 NAME_render_front.png, NAME_render_back.png.
 
-The body mesh is the built-in one of --body, or --body-mesh FILE.obj (a closed mesh in metres, y \
+The body mesh is the one of --body (`BodyMesh::for_body`), or --body-mesh FILE.obj (a closed mesh in metres, y \
 up). --fabric is a built-in fabric (default, mid_bending, minimal_bending: the reference's \
 presets) or a fabric file (YAML, `fabric:` with spring_ke, spring_kd, garment_edge_ke, \
 garment_edge_kd, fabric_density, fabric_thickness, fabric_friction, and `base: NAME`).
@@ -262,7 +262,7 @@ pub struct BuildArgs {
     /// Spacing of the mesh's boundary vertices in cm, with `--formats ...,mesh`.
     #[arg(long, value_name = "CM", default_value_t = 1.0, value_parser = positive_cm)]
     pub mesh_resolution: f64,
-    /// With `--formats ...,drape`: the body mesh to drape on (OBJ, closed, metres, y up) instead of the built-in mesh of --body.
+    /// With `--formats ...,drape`: the body mesh to drape on (OBJ, closed, metres, y up) instead of the mesh of --body.
     #[arg(long, value_name = "FILE.obj")]
     pub body_mesh: Option<PathBuf>,
     /// With `--formats ...,drape`: fabric, frame and time limits.
@@ -308,7 +308,7 @@ pub struct DrapeArgs {
     /// Body: a body file (.yaml) or a built-in body; its measurements place the attachments (and build a design).
     #[arg(short, long, value_name = "NAME|FILE.yaml", default_value = garments::builtin::DEFAULT_BODY, value_parser = body_arg(), hide_possible_values = true)]
     pub body: String,
-    /// The body mesh to drape on (OBJ, closed, metres, y up), instead of the built-in mesh of --body.
+    /// The body mesh to drape on (OBJ, closed, metres, y up), instead of the mesh of --body.
     #[arg(long, value_name = "FILE.obj")]
     pub body_mesh: Option<PathBuf>,
     /// Fabric, frame and time limits.

@@ -29,7 +29,7 @@ pub const MAX_SELF_INTERSECTIONS: usize = 300;
 pub struct DrapeSetup<'a> {
     /// The body mesh.
     pub body: &'a BodyMesh,
-    /// Where the body mesh comes from (`built-in NAME` or the file), for the record.
+    /// Where the body mesh comes from ([`body_mesh_source`] or the file), for the record.
     pub body_source: &'a str,
     /// The measurements (attachment planes) and their label.
     pub measurements: (&'a garmentcode::Body, &'a str),
@@ -193,8 +193,13 @@ pub fn load_fabric(arg: &str) -> Result<Fabric, CliError> {
 pub fn load_body_mesh(file: Option<&Path>, name: &str, body: &garmentcode::Body) -> Result<(BodyMesh, String), CliError> {
     match file {
         Some(f) => BodyMesh::load(f).map(|m| (m, f.display().to_string())).map_err(|e| CliError::Input(e.to_string())),
-        None => BodyMesh::for_body(name, body).map(|m| (m, format!("built-in {name}"))).map_err(|e| CliError::Input(e.to_string())),
+        None => BodyMesh::for_body(name, body).map(|m| (m, body_mesh_source(name))).map_err(|e| CliError::Input(e.to_string())),
     }
+}
+
+/// How `NAME_drape.json` names the mesh [`BodyMesh::for_body`] gives for the body `name`.
+pub fn body_mesh_source(name: &str) -> String {
+    format!("the mesh of body {name}")
 }
 
 /// A progress line on stderr every 50 frames (overwritten in place on a terminal).

@@ -334,7 +334,7 @@ fn drape_sample(
     let name = &s.sampler.bodies()[sample.body].name;
     let setup = crate::commands::drape::DrapeSetup {
         body: body_mesh,
-        body_source: &format!("built-in {name}"),
+        body_source: &crate::commands::drape::body_mesh_source(name),
         measurements: (&measurements, name),
         fabric: &config.fabric,
         max_frames: config.max_frames,
