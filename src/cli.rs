@@ -38,6 +38,9 @@ pub enum Command {
     /// Mesh a pattern for cloth simulation: the reference's box mesh and its files.
     #[command(long_about = MESH_ABOUT)]
     Mesh(MeshArgs),
+    /// Drape a garment on a body: the draped mesh (OBJ, GLB), its figures and front and back pictures.
+    #[command(long_about = DRAPE_ABOUT)]
+    Drape(DrapeArgs),
     /// Patterns to print, cut and sew: tiled and one-sheet PDF, SVG, DXF-AAMA and a cutting layout.
     #[command(long_about = PRINT_ABOUT)]
     Print(PrintArgs),
@@ -67,6 +70,27 @@ with per-corner UVs), NAME_material.mtl, NAME_sim_segmentation.txt (a panel name
 per vertex), NAME_orig_lens.pickle (2D rest lengths), NAME_vertex_labels.yaml, NAME_specification.json, \
 and NAME_sim_mesh.obj (metres) and NAME_boxmesh.ply (segments as vertex attributes). NAME is the \
 specification's file name without _specification.json (a plain specification.json: its folder's name).
+
+The output folder is written whole, as `build` writes it.";
+
+const DRAPE_ABOUT: &str = "\
+Drape a garment on a body with the reference's cloth simulation (XPBD, its default fabric and \
+stopping rules). The garment is a pattern (SPEC.json) or a design (a built-in name or a design \
+file, built on --body). DIR gets the box mesh files (as `garmentcode mesh` writes them) and \
+NAME_sim.obj (the draped mesh, cm, y up, the box mesh's vertices and faces in its order), \
+NAME_sim.glb (glTF 2.0, metres, with the body), NAME_drape.json (frames, time, converged, body \
+penetrations, self-intersections, seam and fabric strain, the settings, body and fabric) and \
+NAME_render_front.png, NAME_render_back.png.
+
+The body mesh is the one of --body (`BodyMesh::for_body`), or --body-mesh FILE.obj (a closed mesh in metres, y \
+up). --fabric is a built-in fabric (default, mid_bending, minimal_bending: the reference's \
+presets) or a fabric file (YAML, `fabric:` with spring_ke, spring_kd, garment_edge_ke, \
+garment_edge_kd, fabric_density, fabric_thickness, fabric_friction, and `base: NAME`).
+
+Progress goes to stderr. Exit status: 0 when the drape settled; 3 when it did not (the frame or \
+time limit was reached) or it failed one of the reference's limits (more than 35 body \
+penetrations or 300 self-intersections): the files are written all the same, and \
+NAME_drape.json lists the reasons under `fails`; 2 for bad input, with nothing written.
 
 The output folder is written whole, as `build` writes it.";
 
@@ -230,7 +254,8 @@ pub struct BuildArgs {
     pub strict: bool,
     /// What to write besides the pattern and its inputs: `svg` and `png` drawings and
     /// the simulation box `mesh` (NAME_boxmesh.obj and the files `garmentcode mesh`
-    /// writes); `json` (the pattern, design, body and checks) is always written.
+    /// writes), `print`, `drape` (the mesh and the drape files of `garmentcode drape`; exit
+    /// status 3 when the drape did not settle); `json` (the pattern, design, body and checks) is always written.
     #[arg(long, value_enum, value_delimiter = ',', value_name = "FORMATS", default_value = "json,svg,png")]
     pub formats: Vec<BuildFormat>,
     /// Do not draw pattern.png (the same as leaving `png` out of --formats).
@@ -239,6 +264,12 @@ pub struct BuildArgs {
     /// Spacing of the mesh's boundary vertices in cm, with `--formats ...,mesh`.
     #[arg(long, value_name = "CM", default_value_t = 1.0, value_parser = positive_cm)]
     pub mesh_resolution: f64,
+    /// With `--formats ...,drape`: the body mesh to drape on (OBJ, closed, metres, y up) instead of the mesh of --body.
+    #[arg(long, value_name = "FILE.obj")]
+    pub body_mesh: Option<PathBuf>,
+    /// With `--formats ...,drape`: fabric, frame and time limits.
+    #[command(flatten)]
+    pub sim: SimArgs,
     /// Drawing layout.
     #[arg(short, long, value_enum, default_value_t = LayoutArg::Placed)]
     pub layout: LayoutArg,
@@ -263,6 +294,67 @@ pub enum BuildFormat {
     Mesh,
     /// The printable pattern (as `garmentcode print` writes it with its defaults).
     Print,
+    /// The garment draped on the body, with the mesh (as `garmentcode drape` writes it).
+    Drape,
+}
+
+/// `garmentcode drape`.
+#[derive(Args, Debug)]
+pub struct DrapeArgs {
+    /// The garment: a pattern (a .json file) or a design (a design file .yaml or a built-in design).
+    #[arg(value_name = "SPEC.json|DESIGN")]
+    pub garment: String,
+    /// Output folder.
+    #[arg(short, long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// Body: a body file (.yaml) or a built-in body; its measurements place the attachments (and build a design).
+    #[arg(short, long, value_name = "NAME|FILE.yaml", default_value = garments::builtin::DEFAULT_BODY, value_parser = body_arg(), hide_possible_values = true)]
+    pub body: String,
+    /// The body mesh to drape on (OBJ, closed, metres, y up), instead of the mesh of --body.
+    #[arg(long, value_name = "FILE.obj")]
+    pub body_mesh: Option<PathBuf>,
+    /// Fabric, frame and time limits.
+    #[command(flatten)]
+    pub sim: SimArgs,
+    /// Spacing of the mesh's boundary vertices in cm.
+    #[arg(short, long, value_name = "CM", default_value_t = 1.0, value_parser = positive_cm)]
+    pub resolution: f64,
+    /// File name prefix (default: from the specification's file name, or the design's name).
+    #[arg(long)]
+    pub name: Option<String>,
+    /// No progress on stderr.
+    #[arg(short, long)]
+    pub quiet: bool,
+    /// Replace an output folder that holds files garmentcode did not write.
+    #[arg(short, long)]
+    pub force: bool,
+}
+
+/// Options of a drape (`drape`, and `build`/`sample` with the `drape` format).
+#[derive(Args, Debug, Clone)]
+pub struct SimArgs {
+    /// Fabric: a built-in fabric (default, mid_bending, minimal_bending) or a fabric file (.yaml).
+    #[arg(long, value_name = "NAME|FILE.yaml", default_value = "default", value_parser = NameOrFile(|| garmentcode_drape::fabric::BUILTIN.to_vec()), hide_possible_values = true)]
+    pub fabric: String,
+    /// Most frames simulated (60 a second; the reference's 2400 by default).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=garmentcode_drape::solver::MAX_FRAMES as i64))]
+    pub max_frames: Option<u32>,
+    /// Most seconds a simulation may take (the reference's 600 by default); then it stops, unsettled.
+    #[arg(long, value_name = "S", default_value_t = 600.0, value_parser = positive_seconds)]
+    pub max_seconds: f64,
+}
+
+impl Default for SimArgs {
+    fn default() -> SimArgs {
+        SimArgs { fabric: "default".into(), max_frames: None, max_seconds: 600.0 }
+    }
+}
+
+fn positive_seconds(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() && x > 0.0 && x <= 1e6 => Ok(x),
+        _ => Err(format!("expects a number of seconds above 0 and at most 1000000, got '{s}'")),
+    }
 }
 
 /// Formats of `schema`.
@@ -402,7 +494,7 @@ pub struct SampleArgs {
     /// Only the samples i with i % K == I (0 <= I < K).
     #[arg(long, value_name = "I/K")]
     pub shard: Option<String>,
-    /// Files per sample: a list of json, svg, png, mesh (the simulation box mesh at 1 cm; default json; with --replay json,svg,png).
+    /// Files per sample: a list of json, svg, png, mesh (the simulation box mesh at 1 cm), drape (the mesh and the garment draped on its body, as `garmentcode drape` writes it; a failed drape is recorded in the summary) (default json; with --replay json,svg,png).
     #[arg(long, value_name = "LIST")]
     pub formats: Option<String>,
     /// Rebuild one sample, or one attempt of it, into DIR as `build` would.
@@ -414,6 +506,9 @@ pub struct SampleArgs {
     /// Unpack shards into DIR as the folder layout (a folder per sample, and the dataset's summary when the shards come from one folder).
     #[arg(long, value_name = "SHARD.tar", num_args = 1.., conflicts_with_all = ["n", "replay", "layout", "shard", "design_space", "bodies", "formats", "jobs"])]
     pub unpack: Vec<PathBuf>,
+    /// With `--formats ...,drape`: fabric, frame and time limits of every drape.
+    #[command(flatten)]
+    pub sim: SimArgs,
 }
 
 /// `garmentcode serve`.

@@ -20,6 +20,7 @@ fn main() {
         Command::Compare(a) => commands::compare::run(a),
         Command::Sample(a) => commands::sample::run(a),
         Command::Mesh(a) => commands::mesh::run(a),
+        Command::Drape(a) => commands::drape::run(a),
         Command::Print(a) => commands::print::run(a),
         Command::Serve(a) => commands::serve::run(a),
         Command::Guide(a) => commands::guide::run(a),

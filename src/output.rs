@@ -32,12 +32,14 @@ pub const OWN_FILES: &[&str] =
 pub const MANIFEST: &str = ".garmentcode-files";
 
 /// Suffix of the pattern `garmentcode mesh` writes beside the mesh files (whose
-/// suffixes are [`garmentcode::mesh::write::FILE_SUFFIXES`]), after the pattern's name.
+/// suffixes are [`garmentcode::mesh::write::FILE_SUFFIXES`], and the drape's
+/// [`garmentcode_drape::FILE_SUFFIXES`]), after the pattern's name.
 const MESH_SPEC_SUFFIX: &str = "_specification.json";
 
 /// A file name garmentcode writes into an output folder.
 fn is_own_file(name: &str) -> bool {
-    let mut mesh_suffixes = std::iter::once(MESH_SPEC_SUFFIX).chain(garmentcode::mesh::write::FILE_SUFFIXES);
+    let mut mesh_suffixes =
+        std::iter::once(MESH_SPEC_SUFFIX).chain(garmentcode::mesh::write::FILE_SUFFIXES).chain(garmentcode_drape::FILE_SUFFIXES);
     OWN_FILES.contains(&name)
         || name == MANIFEST
         || name == "size-run.txt"

@@ -24,16 +24,28 @@
 pub mod body;
 mod bvh;
 mod check;
+pub mod fabric;
+mod glb;
 pub mod mannequin;
 mod parts;
+pub mod render;
 mod selfcol;
 pub mod solver;
+mod strain;
 
 pub use body::{BodyError, BodyMesh};
+pub use fabric::{Fabric, FabricError};
+pub use glb::glb;
 pub use solver::{Attachment, Drape, DrapeError, Next, Progress, Settings, Stats, drape, drape_with_progress};
+pub use strain::Strain;
 
 use garmentcode::Vec3;
 use garmentcode::mesh::BoxMesh;
+
+/// Suffixes (after the box mesh's name) of the files of a drape besides the box mesh's:
+/// the draped mesh as OBJ ([`sim_obj`]) and GLB ([`glb`]), its figures, and the front and
+/// back pictures ([`render::render_png`]).
+pub const FILE_SUFFIXES: [&str; 5] = ["_sim.obj", "_sim.glb", "_drape.json", "_render_front.png", "_render_back.png"];
 
 /// `<name>_sim.obj`: the box mesh's OBJ (same vertices, texture coordinates and faces, in the
 /// same order) with the vertices moved to `positions` (cm), as the reference saves a drape.

@@ -1198,6 +1198,7 @@ fn sample_dataset(
         replay: None,
         layout,
         unpack: Vec::new(),
+        sim: Default::default(),
     };
     let shard_of = shard;
     let mut callback_error: Option<PyErr> = None;

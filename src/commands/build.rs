@@ -1,6 +1,7 @@
 //! `garmentcode build`: a garment from a design and a body into a folder.
 
 use crate::cli::{BuildArgs, BuildFormat};
+use crate::commands::drape::{DrapeSetup, EXIT_UNSETTLED, ProgressLine, drape_files, load_body_mesh, load_fabric};
 use crate::commands::{CliError, load_body, load_design, write_folder};
 use crate::output::OutputSet;
 use garmentcode::Params;
@@ -12,7 +13,7 @@ use garments::build::build;
 pub fn run(args: BuildArgs) -> Result<i32, CliError> {
     let (design, design_label) = load_design(&args.design)?;
     let (body, body_label) = load_body(&args.body)?;
-    let name = args.name.unwrap_or_else(|| design_label.clone());
+    let name = args.name.clone().unwrap_or_else(|| design_label.clone());
     let built = build(&design, &body, &name).map_err(|e| CliError::Input(format!("{design_label} on {body_label}: {e}")))?;
     let warnings = built.checks.warnings();
     for w in &warnings {
@@ -28,8 +29,23 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
     let origin = Origin { design: &design, body: &body, checks: &built.checks };
     let draw = args.png.draw_options(args.layout.into());
     let print = garmentcode::fabricate::PrintOptions { garment: name.clone(), size: body_label.clone(), ..Default::default() };
-    let mut set = files(&built.pattern, Some(origin), &wanted, &draw, args.mesh_resolution, &print)
+    let drape = wanted.contains(&BuildFormat::Drape);
+    // The drape adds the mesh files itself, meshing once.
+    let others: Vec<BuildFormat> = wanted.iter().copied().filter(|&f| !(drape && f == BuildFormat::Mesh)).collect();
+    let mut set = files(&built.pattern, Some(origin), &others, &draw, args.mesh_resolution, &print)
         .map_err(|e| CliError::Input(format!("{design_label} on {body_label}: {e}")))?;
+    let mut status = 0;
+    if drape {
+        let fails = add_drape(&mut set, &built.pattern, &args, (&body, &body_label))?;
+        if !fails.is_empty() {
+            eprintln!("drape failed the reference's checks: {} (exit status {EXIT_UNSETTLED})", fails.join(", "));
+            status = EXIT_UNSETTLED;
+        }
+        set.add_input(&args.sim.fabric);
+        if let Some(f) = &args.body_mesh {
+            set.add_input(f);
+        }
+    }
     set.add_input(&args.design);
     set.add_input(&args.body);
     write_folder(&set, &args.out, args.force)?;
@@ -39,7 +55,37 @@ pub fn run(args: BuildArgs) -> Result<i32, CliError> {
         built.pattern.panels.len(),
         built.pattern.stitches.len()
     );
-    Ok(0)
+    Ok(status)
+}
+
+/// `--formats ...,drape`: the box mesh files and the drape files of `pattern` on `body`
+/// (measurements and label); returns the reference's failure reasons of the drape.
+fn add_drape(
+    set: &mut OutputSet,
+    pattern: &garmentcode::Pattern,
+    args: &BuildArgs,
+    body: (&garmentcode::Body, &str),
+) -> Result<Vec<&'static str>, CliError> {
+    let fail = |e: String| CliError::Input(format!("{}: {e}", pattern.name));
+    let fabric = load_fabric(&args.sim.fabric)?;
+    let (body_mesh, source) = load_body_mesh(args.body_mesh.as_deref(), body.1, body.0)?;
+    let mesh = BoxMesh::new(pattern, args.mesh_resolution).map_err(|e| fail(format!("cannot mesh the pattern: {e}")))?;
+    let setup = DrapeSetup {
+        body: &body_mesh,
+        body_source: &source,
+        measurements: body,
+        fabric: &fabric,
+        max_frames: args.sim.max_frames.map(|n| n as usize),
+        max_seconds: args.sim.max_seconds,
+    };
+    let mut progress = ProgressLine::new(false);
+    let draped = drape_files(pattern, &mesh, &setup, |p| progress.frame(p));
+    progress.finish();
+    let draped = draped.map_err(|e| fail(format!("cannot drape on {}: {e}", body_mesh.name)))?;
+    for (file, bytes) in mesh.files().into_iter().chain(draped.files) {
+        set.add(&file, bytes);
+    }
+    Ok(draped.fails)
 }
 
 /// What a built pattern was made of, for the files that record it.

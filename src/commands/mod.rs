@@ -3,6 +3,7 @@
 pub mod build;
 pub mod check;
 pub mod compare;
+pub mod drape;
 pub mod guide;
 pub mod mesh;
 pub mod print;

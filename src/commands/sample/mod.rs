@@ -48,6 +48,7 @@ struct Options {
     formats: Formats,
     replay: Option<(u64, Option<u32>)>,
     layout: Layout,
+    sim: crate::cli::SimArgs,
 }
 
 /// `--layout`: a folder per sample, or tar shards of so many samples.
@@ -99,6 +100,7 @@ impl Options {
             formats,
             replay,
             layout,
+            sim: args.sim,
         })
     }
 }
@@ -137,7 +139,10 @@ fn parse_formats(s: &str) -> Result<Formats, CliError> {
             "svg" => f.svg = true,
             "png" => f.png = true,
             "mesh" => f.mesh = true,
-            other => return Err(usage(format!("sample --formats: unknown format '{other}' (expected a list of json, svg, png, mesh)"))),
+            "drape" => f.drape = true,
+            other => {
+                return Err(usage(format!("sample --formats: unknown format '{other}' (expected a list of json, svg, png, mesh, drape)")));
+            }
         }
     }
     Ok(f)
@@ -257,7 +262,20 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>, quiet: bool) 
         prepare_out(&opts.out)?;
     }
 
-    let settings = Settings::new(&sampler, opts.formats);
+    let drape = match opts.formats.drape {
+        true => {
+            Some((crate::commands::drape::load_fabric(&opts.sim.fabric)?, opts.sim.max_frames.map(|n| n as usize), opts.sim.max_seconds))
+        }
+        false => None,
+    };
+    let settings = Settings::new(&sampler, opts.formats, drape);
+    if let Some(config) = &settings.drape {
+        for (b, meshes) in config.meshes.iter().enumerate() {
+            if let Err(e) = &meshes[0] {
+                note(format_args!("warning: body {}: {e}; its samples' drapes fail (recorded as body_mesh)", body_names[b]));
+            }
+        }
+    }
     let (shard_i, shard_k) = opts.shard.unwrap_or((0, 1));
     let wanted = |i: u64| i % shard_k == shard_i;
     let start = Instant::now();
@@ -359,7 +377,7 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>, quiet: bool) 
                 Ok(())
             };
             // Finished samples wait in memory with their files: a few megabytes each with meshes.
-            let queue = if opts.formats.mesh { jobs } else { 16 * jobs };
+            let queue = if opts.formats.mesh || opts.formats.drape { jobs } else { 16 * jobs };
             pool(jobs, queue, slots, todo, index_of, work, collect, report.take())?;
             (resumed, jobs, writer)
         }
@@ -396,6 +414,9 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>, quiet: bool) 
         tally.samples(),
         tally.rejected(),
     ));
+    if opts.formats.drape && tally.failed_drapes() > 0 {
+        note(format_args!("{} drape(s) failed (kept with their other files; by reason in the summary)", tally.failed_drapes()));
+    }
     if !failed.is_empty() {
         let shown: Vec<&str> = failed.iter().take(10).map(String::as_str).collect();
         return Err(CliError::Failed(format!(
@@ -540,6 +561,36 @@ fn unpack(shards: &[PathBuf], out: &Path) -> Result<i32, CliError> {
     Ok(0)
 }
 
+/// The drape files of a replayed sample (`--formats ...,drape`) on its body's mesh; returns
+/// the drape's failure reasons.
+fn replay_drape(
+    set: &mut OutputSet,
+    opts: &Options,
+    pattern: &garmentcode::Pattern,
+    mesh: &garmentcode::mesh::BoxMesh,
+    body: (&garmentcode::Body, &str),
+) -> Result<Vec<&'static str>, CliError> {
+    use crate::commands::drape;
+    let fabric = drape::load_fabric(&opts.sim.fabric)?;
+    let (body_mesh, source) = drape::load_body_mesh(None, body.1, body.0)?;
+    let setup = drape::DrapeSetup {
+        body: &body_mesh,
+        body_source: &source,
+        measurements: body,
+        fabric: &fabric,
+        max_frames: opts.sim.max_frames.map(|n| n as usize),
+        max_seconds: opts.sim.max_seconds,
+    };
+    let mut progress = drape::ProgressLine::new(false);
+    let draped = drape::drape_files(pattern, mesh, &setup, |p| progress.frame(p));
+    progress.finish();
+    let draped = draped.map_err(|e| CliError::Failed(format!("{}: cannot drape on {}: {e}", pattern.name, body.1)))?;
+    for (file, bytes) in draped.files {
+        set.add(&file, bytes);
+    }
+    Ok(draped.fails)
+}
+
 /// `--replay INDEX[:ATTEMPT]`: rebuild one sample (or one attempt of it, accepted
 /// or rejected) into `--out` as `garmentcode build` would, with its checks.
 fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<u32>) -> Result<i32, CliError> {
@@ -572,9 +623,21 @@ fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<
                 crate::commands::add_drawings(&mut set, &built.pattern, opts.formats.png, garmentcode::draw::Layout::Placed)
                     .map_err(|e| CliError::Failed(e.to_string()))?;
             }
-            if opts.formats.mesh {
+            if opts.formats.mesh || opts.formats.drape {
                 let mesh = garmentcode::mesh::BoxMesh::new(&built.pattern, garmentcode::mesh::DEFAULT_RESOLUTION)
                     .map_err(|e| CliError::Failed(format!("{name}: cannot mesh the pattern: {e}")))?;
+                if opts.formats.drape {
+                    let fails = replay_drape(
+                        &mut set,
+                        opts,
+                        &built.pattern,
+                        &mesh,
+                        (&sampler.body_for(body, &design), &sampler.bodies()[body].name),
+                    )?;
+                    if !fails.is_empty() {
+                        eprintln!("{name}: the drape failed the reference's checks: {}", fails.join(", "));
+                    }
+                }
                 crate::commands::add_mesh(&mut set, mesh);
             }
             set.add("checks.json", built.checks.to_json());

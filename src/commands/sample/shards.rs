@@ -53,8 +53,15 @@ fn member_name(key: &str, file: &str) -> String {
 
 /// The folder file name of a member's suffix: the inverse of [`member_name`].
 fn folder_file_name(key: &str, rest: &str) -> String {
-    let mesh_file = garmentcode::mesh::write::FILE_SUFFIXES.iter().any(|suffix| suffix.strip_prefix('_') == Some(rest));
-    if rest == "specification.json" || rest.starts_with("pattern.") || mesh_file { format!("{key}_{rest}") } else { rest.to_string() }
+    if rest == "specification.json" || rest.starts_with("pattern.") || mesh_file(rest) { format!("{key}_{rest}") } else { rest.to_string() }
+}
+
+/// Whether `rest` is the suffix (without its `_`) of a mesh or drape file.
+fn mesh_file(rest: &str) -> bool {
+    garmentcode::mesh::write::FILE_SUFFIXES
+        .iter()
+        .chain(&garmentcode_drape::FILE_SUFFIXES)
+        .any(|suffix| suffix.strip_prefix('_') == Some(rest))
 }
 
 /// Split a member name into its sample index, key and suffix. The suffix is one
@@ -67,10 +74,9 @@ fn split_member(name: &str) -> Option<(u64, &str, &str)> {
 }
 
 /// Whether `rest` names a file of a sample in a shard (as [`member_name`] makes
-/// them): the pattern, its drawings, the mesh files, the design, body and record.
+/// them): the pattern, its drawings, the mesh and drape files, the design, body and record.
 fn is_sample_file(rest: &str) -> bool {
-    let mesh_file = garmentcode::mesh::write::FILE_SUFFIXES.iter().any(|suffix| suffix.strip_prefix('_') == Some(rest));
-    mesh_file
+    mesh_file(rest)
         || ["specification.json", "pattern.svg", "pattern.png", "design_params.yaml", "body_measurements.yaml", store::INFO].contains(&rest)
 }
 
@@ -805,6 +811,7 @@ mod tests {
                 panels: 4,
             }),
             rejections: vec![],
+            drape: None,
         };
         let mut w = ShardWriter::new(Some(&dir), 2, 20..24);
         // 22 finishes first, 21 had every design rejected.

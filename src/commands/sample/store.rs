@@ -26,15 +26,22 @@ pub struct Formats {
     /// The simulation box mesh at the default resolution: `<name>_boxmesh.obj` and the
     /// other files of [`garmentcode::mesh::write::FILE_SUFFIXES`].
     pub mesh: bool,
+    /// The garment draped on its body (`garmentcode drape`'s files; the mesh files too).
+    pub drape: bool,
 }
 
 impl Formats {
     /// The names, in a fixed order.
     pub fn names(&self) -> Vec<&'static str> {
-        [(self.json, "json"), (self.svg, "svg"), (self.png, "png"), (self.mesh, "mesh")].into_iter().filter(|f| f.0).map(|f| f.1).collect()
+        [(self.json, "json"), (self.svg, "svg"), (self.png, "png"), (self.mesh, "mesh"), (self.drape, "drape")]
+            .into_iter()
+            .filter(|f| f.0)
+            .map(|f| f.1)
+            .collect()
     }
 
-    /// Files a finished sample has for these formats.
+    /// Files a finished sample has for these formats (a drape's own files only when it
+    /// could run: its record says).
     pub fn files(&self, name: &str) -> Vec<String> {
         let mut out = Vec::new();
         if self.json {
@@ -46,7 +53,7 @@ impl Formats {
         if self.png {
             out.push(format!("{name}_pattern.png"));
         }
-        if self.mesh {
+        if self.mesh || self.drape {
             out.extend(garmentcode::mesh::write::FILE_SUFFIXES.iter().map(|suffix| format!("{name}{suffix}")));
         }
         out
@@ -96,6 +103,35 @@ pub struct Record {
     pub accepted: Option<Accepted>,
     /// Rejected attempts (before the accepted one).
     pub rejections: Vec<RejectionRecord>,
+    /// With the `drape` format, how the accepted sample's drape went.
+    pub drape: Option<DrapeRecord>,
+}
+
+/// How a sample's drape went, as the reference records simulations: the reasons it
+/// counts as failed (its names: `static_equilibrium`, `simulation_timeout`,
+/// `cloth_body_intersection`, `cloth_self_intersection`; and `meshgen`, `body_mesh` or
+/// `crashes` when it could not run, with `message`). Empty when it settled within limits.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct DrapeRecord {
+    /// Failure reasons, in the order found.
+    pub fails: Vec<String>,
+    /// Why the drape could not run (its files are missing then).
+    pub message: Option<String>,
+    /// Frames simulated.
+    pub frames: u64,
+}
+
+/// How `--formats ...,drape` drapes: the fabric, the limits and the body meshes.
+pub struct DrapeConfig {
+    /// The fabric.
+    pub fabric: garmentcode_drape::Fabric,
+    /// Frame limit (the reference's when `None`).
+    pub max_frames: Option<usize>,
+    /// Time limit of one simulation (s).
+    pub max_seconds: f64,
+    /// Per body of the sampler, the mesh to drape on without and with pants (as the
+    /// measurements differ), or why there is none.
+    pub meshes: Vec<[Result<garmentcode_drape::BodyMesh, String>; 2]>,
 }
 
 /// Settings that make samples of one dataset: a rerun into the same folder must
@@ -109,19 +145,40 @@ pub struct Settings<'a> {
     pub writer: DesignWriter,
     /// `body_measurements.yaml` of each body, straight and with legs apart.
     pub body_files: Vec<[String; 2]>,
+    /// How to drape, with the `drape` format.
+    pub drape: Option<DrapeConfig>,
 }
 
 impl<'a> Settings<'a> {
-    /// Settings of a run; renders what every sample shares once.
-    pub fn new(sampler: &'a DatasetSampler, formats: Formats) -> Settings<'a> {
+    /// Settings of a run; renders what every sample shares once. `drape` (fabric and
+    /// limits) is used with the `drape` format.
+    pub fn new(
+        sampler: &'a DatasetSampler,
+        formats: Formats,
+        drape: Option<(garmentcode_drape::Fabric, Option<usize>, f64)>,
+    ) -> Settings<'a> {
         let mut with_pants = garments::Design::defaults();
         with_pants.meta.bottom = Some(garments::design::BottomKind::Pants);
         let mut without = garments::Design::defaults();
         without.meta.bottom = None;
-        let body_files = (0..sampler.bodies().len())
-            .map(|b| [sampler.body_for(b, &without).to_yaml(), sampler.body_for(b, &with_pants).to_yaml()])
-            .collect();
-        Settings { sampler, fingerprint: fingerprint(sampler), formats, writer: DesignWriter::new(sampler.space()), body_files }
+        let bodies = |b: usize| [sampler.body_for(b, &without), sampler.body_for(b, &with_pants)];
+        let body_files = (0..sampler.bodies().len()).map(|b| bodies(b).map(|body| body.to_yaml())).collect();
+        let mut fingerprint = fingerprint(sampler);
+        let drape = drape.filter(|_| formats.drape).map(|(fabric, max_frames, max_seconds)| {
+            // Drapes of another fabric or frame limit do not belong to the same dataset.
+            let mut h = crate::output::Fnv1a::default();
+            h.write(fingerprint.as_bytes());
+            h.write(format!("{:?}{max_frames:?}", fabric.values()).as_bytes());
+            fingerprint = format!("{:016x}", h.finish());
+            let meshes = (0..sampler.bodies().len())
+                .map(|b| {
+                    let name = &sampler.bodies()[b].name;
+                    bodies(b).map(|body| garmentcode_drape::BodyMesh::for_body(name, &body).map_err(|e| e.to_string()))
+                })
+                .collect();
+            DrapeConfig { fabric, max_frames, max_seconds, meshes }
+        });
+        Settings { sampler, fingerprint, formats, writer: DesignWriter::new(sampler.space()), body_files, drape }
     }
 }
 
@@ -170,11 +227,11 @@ pub fn draw(s: &Settings, arena: &mut garmentcode::Arena, index: u64) -> Result<
                 .into_iter()
                 .map(|r| RejectionRecord { attempt: r.attempt, body: body_name(r.body), reason: r.reason, message: r.message })
                 .collect();
-            Ok((Record { index, accepted: None, rejections }, None))
+            Ok((Record { index, accepted: None, rejections, drape: None }, None))
         }
         Outcome::Accepted(sample) => {
-            let record = record_of(sampler, &sample);
-            let files = files_of(s, &sample, &record)?;
+            let mut record = record_of(sampler, &sample);
+            let files = files_of(s, &sample, &mut record)?;
             Ok((record, Some(files)))
         }
     }
@@ -204,11 +261,11 @@ fn record_of(sampler: &DatasetSampler, sample: &Sample) -> Record {
             message: r.message.clone(),
         })
         .collect();
-    Record { index: sample.index, accepted: Some(accepted), rejections }
+    Record { index: sample.index, accepted: Some(accepted), rejections, drape: None }
 }
 
-/// The files of a sample folder, in memory.
-fn files_of(s: &Settings, sample: &Sample, record: &Record) -> Result<Files, String> {
+/// The files of a sample folder, in memory; the drape's outcome goes into `record`.
+fn files_of(s: &Settings, sample: &Sample, record: &mut Record) -> Result<Files, String> {
     let name = sample_name(sample.index);
     let pattern = &sample.built.pattern;
     let fail = |what: &str, e: garmentcode::Error| format!("{name}: cannot write the {what}: {e}");
@@ -226,17 +283,64 @@ fn files_of(s: &Settings, sample: &Sample, record: &Record) -> Result<Files, Str
     if s.formats.png {
         files.push((format!("{name}_pattern.png"), garmentcode::draw::to_png(pattern, &opts).map_err(|e| fail("PNG drawing", e))?));
     }
-    if s.formats.mesh {
-        let mesh = garmentcode::mesh::BoxMesh::new(pattern, garmentcode::mesh::DEFAULT_RESOLUTION)
-            .map_err(|e| format!("{name}: cannot mesh the pattern: {e}"))?;
-        let suffixes = garmentcode::mesh::write::FILE_SUFFIXES;
-        files.extend(suffixes.iter().zip(mesh.files()).map(|(suffix, (_, bytes))| (format!("{name}{suffix}"), bytes)));
+    if s.formats.mesh || s.formats.drape {
+        let mesh = garmentcode::mesh::BoxMesh::new(pattern, garmentcode::mesh::DEFAULT_RESOLUTION);
+        match (mesh, &s.drape) {
+            (Ok(mesh), drape) => {
+                let mesh = garmentcode::mesh::BoxMesh { name: name.clone(), ..mesh };
+                files.extend(mesh.files());
+                if let Some(config) = drape {
+                    let pants = sample.design.meta.bottom == Some(garments::design::BottomKind::Pants);
+                    let outcome = drape_sample(s, config, sample, pants, &mesh);
+                    record.drape = Some(match outcome {
+                        Ok(draped) => {
+                            files.extend(draped.files);
+                            DrapeRecord {
+                                fails: draped.fails.iter().map(|f| f.to_string()).collect(),
+                                message: None,
+                                frames: draped.stats.frames as u64,
+                            }
+                        }
+                        Err((reason, message)) => DrapeRecord { fails: vec![reason.into()], message: Some(message), frames: 0 },
+                    });
+                }
+            }
+            // A failed drape is recorded and the sample kept; without a drape the mesh is
+            // what was asked for, and its failure the run's.
+            (Err(e), Some(_)) => {
+                record.drape =
+                    Some(DrapeRecord { fails: vec!["meshgen".into()], message: Some(format!("cannot mesh the pattern: {e}")), frames: 0 })
+            }
+            (Err(e), None) => return Err(format!("{name}: cannot mesh the pattern: {e}")),
+        }
     }
     files.push(("design_params.yaml".into(), s.writer.write(&sample.design).into_bytes()));
     let pants = sample.design.meta.bottom == Some(garments::design::BottomKind::Pants);
     files.push(("body_measurements.yaml".into(), s.body_files[sample.body][usize::from(pants)].clone().into_bytes()));
     files.push((INFO.into(), info_json(s, record).into_bytes()));
     Ok(files)
+}
+
+/// Drapes a sample's box mesh on its body: the drape files, or the failure reason and message.
+fn drape_sample(
+    s: &Settings,
+    config: &DrapeConfig,
+    sample: &Sample,
+    pants: bool,
+    mesh: &garmentcode::mesh::BoxMesh,
+) -> Result<crate::commands::drape::Draped, (&'static str, String)> {
+    let body_mesh = config.meshes[sample.body][usize::from(pants)].as_ref().map_err(|e| ("body_mesh", e.clone()))?;
+    let measurements = s.sampler.body_for(sample.body, &sample.design);
+    let name = &s.sampler.bodies()[sample.body].name;
+    let setup = crate::commands::drape::DrapeSetup {
+        body: body_mesh,
+        body_source: &crate::commands::drape::body_mesh_source(name),
+        measurements: (&measurements, name),
+        fabric: &config.fabric,
+        max_frames: config.max_frames,
+        max_seconds: config.max_seconds,
+    };
+    crate::commands::drape::drape_files(&sample.built.pattern, mesh, &setup, |_| {}).map_err(|e| ("crashes", e))
 }
 
 /// Write files into `.name.tmp-PID`, then rename it to `name`. A folder made
@@ -285,6 +389,10 @@ fn info_json(s: &Settings, r: &Record) -> String {
         },
         "rejected": rejected,
     });
+    let mut v = v;
+    if let Some(d) = &r.drape {
+        v["drape"] = json!({ "fails": d.fails, "message": d.message, "frames": d.frames });
+    }
     serde_json::to_string_pretty(&v).expect("record serialises") + "\n"
 }
 
@@ -332,7 +440,20 @@ pub fn parse_info(text: &str, show: &dyn std::fmt::Display, s: &Settings, index:
             message: text_of(&x["message"])?,
         });
     }
-    Ok(Record { index, accepted: Some(accepted), rejections })
+    let drape = match &v["drape"] {
+        Value::Null if !s.formats.drape => None,
+        d if s.formats.drape => Some(DrapeRecord {
+            fails: d["fails"].as_array().ok_or_else(bad)?.iter().map(text_of).collect::<Result<_, _>>()?,
+            message: d["message"].as_str().map(str::to_string),
+            frames: d["frames"].as_u64().ok_or_else(bad)?,
+        }),
+        _ => {
+            return Err(format!(
+                "{show}: the dataset was made with other --formats (drape or not); resume with the same --formats or choose another --out"
+            ));
+        }
+    };
+    Ok(Record { index, accepted: Some(accepted), rejections, drape })
 }
 
 /// The entries of a dataset folder, found by [`list`].

@@ -98,6 +98,13 @@ pub struct Tally {
     failed: Vec<u64>,
     /// Per reason of [`Reason::ALL`], the first [`EXAMPLES`] rejections by (index, attempt).
     examples: Vec<Vec<(u64, RejectionRecord)>>,
+    /// Drapes made (with the `drape` format).
+    draped: u64,
+    /// Failed drapes: per reason (in order of first index), the sample indices, as the
+    /// reference lists failed simulations (`sim.stats.fails`).
+    drape_fails: Vec<(String, Vec<u64>)>,
+    /// The first [`EXAMPLES`] messages of drapes that could not run, by index.
+    drape_errors: Vec<(u64, String)>,
 }
 
 impl Tally {
@@ -117,6 +124,9 @@ impl Tally {
             rejected: 0,
             failed: Vec::new(),
             examples: vec![Vec::new(); Reason::ALL.len()],
+            draped: 0,
+            drape_fails: Vec::new(),
+            drape_errors: Vec::new(),
         }
     }
 
@@ -137,6 +147,20 @@ impl Tally {
             }
             None => self.failed.push(i),
         }
+        if let Some(d) = &r.drape {
+            self.draped += 1;
+            for reason in &d.fails {
+                match self.drape_fails.iter_mut().find(|(k, _)| k == reason) {
+                    Some((_, list)) => list.push(i),
+                    None => self.drape_fails.push((reason.clone(), vec![i])),
+                }
+            }
+            if let Some(m) = &d.message {
+                let at = self.drape_errors.partition_point(|(j, _)| *j < i);
+                self.drape_errors.insert(at, (i, m.clone()));
+                self.drape_errors.truncate(EXAMPLES);
+            }
+        }
         for x in &r.rejections {
             self.rejected += 1;
             self.reasons.add(x.reason.key(), i);
@@ -154,6 +178,14 @@ impl Tally {
     /// Accepted samples.
     pub fn samples(&self) -> u64 {
         self.samples
+    }
+
+    /// Samples whose drape failed (any reason).
+    pub fn failed_drapes(&self) -> u64 {
+        let mut all: Vec<u64> = self.drape_fails.iter().flat_map(|(_, l)| l.iter().copied()).collect();
+        all.sort_unstable();
+        all.dedup();
+        all.len() as u64
     }
 
     /// Rejected designs (drawn again).
@@ -228,6 +260,24 @@ impl Tally {
         if !failed.is_empty() {
             top.push(("failed_samples", seq(failed)));
         }
+        if about.formats.contains(&"drape") {
+            let mut fails: Vec<(String, Vec<u64>)> = self.drape_fails.clone();
+            fails.iter_mut().for_each(|(_, l)| l.sort_unstable());
+            fails.sort_by_key(|(_, l)| l[0]);
+            let names = |l: &[u64]| seq(l.iter().map(|&i| s(&sample_name(i))).collect());
+            let by_reason = fails.iter().map(|(k, l)| (k.as_str(), int(l.len() as u64))).collect();
+            let errors = self.drape_errors.iter().map(|(i, m)| map(vec![("sample", s(&sample_name(*i))), ("message", s(m))])).collect();
+            top.push((
+                "drape",
+                map(vec![
+                    ("draped", int(self.draped)),
+                    ("failed", int(self.failed_drapes())),
+                    ("by_reason", map(by_reason)),
+                    ("fails", map(fails.iter().map(|(k, l)| (k.as_str(), names(l))).collect())),
+                    ("errors", seq(errors)),
+                ]),
+            ));
+        }
         top.extend([
             ("garment_types", types),
             ("bodies_used", self.bodies.node()),
@@ -283,7 +333,7 @@ mod tests {
                     styles: if i > 30 { vec!["long_sleeve".into(), format!("odd_{}", i % 2)] } else { vec![] },
                     panels: 4,
                 });
-                Record { index: i, accepted, rejections }
+                Record { index: i, accepted, rejections, drape: None }
             })
             .collect()
     }
