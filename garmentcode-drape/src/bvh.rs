@@ -51,6 +51,8 @@ pub(crate) struct Closest {
 pub(crate) struct Bvh {
     nodes: Vec<Node>,
     order: Vec<u32>,
+    /// Box of each triangle (lower, upper corner), as of the last refit.
+    boxes: Vec<(Vec3, Vec3)>,
 }
 
 fn bounds(t: &[Vec3; 3]) -> (Vec3, Vec3) {
@@ -66,7 +68,11 @@ fn box_dist2(p: Vec3, lo: Vec3, hi: Vec3) -> f64 {
 impl Bvh {
     /// The tree over `tris`.
     pub fn new(tris: &[[Vec3; 3]]) -> Bvh {
-        let mut bvh = Bvh { nodes: Vec::with_capacity(2 * tris.len() / LEAF + 1), order: (0..tris.len() as u32).collect() };
+        let mut bvh = Bvh {
+            nodes: Vec::with_capacity(2 * tris.len() / LEAF + 1),
+            order: (0..tris.len() as u32).collect(),
+            boxes: vec![(Vec3::ZERO, Vec3::ZERO); tris.len()],
+        };
         let centroids: Vec<Vec3> = tris.iter().map(|t| (t[0] + t[1] + t[2]) / 3.0).collect();
         bvh.nodes.push(Node { lo: Vec3::ZERO, hi: Vec3::ZERO, start: 0, count: 0 });
         bvh.build(0, 0, tris.len(), &centroids);
@@ -107,13 +113,23 @@ impl Bvh {
 
     /// Recomputes the boxes for moved corners (same triangles, same order).
     pub fn refit(&mut self, tris: &[[Vec3; 3]]) {
+        self.refit_padded(tris, |_| 0.0);
+    }
+
+    /// [`Bvh::refit`] with the box of triangle `i` grown by `pad(i)` on every side.
+    pub fn refit_padded(&mut self, tris: &[[Vec3; 3]], pad: impl Fn(usize) -> f64) {
+        for (i, (b, t)) in self.boxes.iter_mut().zip(tris).enumerate() {
+            let (lo, hi) = bounds(t);
+            let p = Vec3::splat(pad(i));
+            *b = (lo - p, hi + p);
+        }
         // Children always follow their parent, so a backward sweep sees them first.
         for n in (0..self.nodes.len()).rev() {
             let node = self.nodes[n];
             let (lo, hi) = if node.count > 0 {
                 self.order[node.start as usize..(node.start + node.count) as usize]
                     .iter()
-                    .map(|&i| bounds(&tris[i as usize]))
+                    .map(|&i| self.boxes[i as usize])
                     .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), (a, b)| (lo.min(a), hi.max(b)))
             } else {
                 let (l, r) = (self.nodes[node.start as usize], self.nodes[node.start as usize + 1]);
@@ -169,7 +185,8 @@ impl Bvh {
         best
     }
 
-    /// Calls `hit(face)` for every triangle whose box meets the box `[lo, hi]`.
+    /// Calls `hit(face)` for every triangle whose box (as of the last refit) meets the box
+    /// `[lo, hi]`, in the tree's order.
     pub fn for_each_in_box(&self, lo: Vec3, hi: Vec3, mut hit: impl FnMut(usize)) {
         if self.nodes.is_empty() {
             return;
@@ -185,7 +202,10 @@ impl Bvh {
             }
             if node.count > 0 {
                 for &i in &self.order[node.start as usize..(node.start + node.count) as usize] {
-                    hit(i as usize);
+                    let (b_lo, b_hi) = self.boxes[i as usize];
+                    if !(b_hi.cmplt(lo).any() || b_lo.cmpgt(hi).any()) {
+                        hit(i as usize);
+                    }
                 }
             } else if top + 2 <= stack.len() {
                 stack[top] = node.start + 1;

@@ -35,6 +35,9 @@ pub(crate) struct SelfCollision {
     pub crossings: Vec<(usize, usize, usize)>,
     point_triangle: Vec<PointTriangle>,
     edge_edge: Vec<EdgeEdge>,
+    /// This frame's look-ahead of every particle, and its length.
+    ahead: Vec<Vec3>,
+    reach: Vec<f64>,
 }
 
 /// Closest points of segments `p1–q1` and `p2–q2` as parameters `(s, t)` along them, and
@@ -94,6 +97,8 @@ impl SelfCollision {
             crossings: Vec::new(),
             point_triangle: Vec::new(),
             edge_edge: Vec::new(),
+            ahead: Vec::new(),
+            reach: Vec::new(),
         }
     }
 
@@ -112,8 +117,16 @@ impl SelfCollision {
         for (t, f) in self.tris.iter_mut().zip(&self.faces) {
             *t = f.map(|i| x[i]);
         }
-        self.bvh.refit(&self.tris);
-        let ahead = |i: usize| v[i] * dt + gravity * (inv_mass[i] * dt * dt);
+        // One frame's look-ahead of every particle (the reference's prediction, gravity
+        // times the inverse mass included) and its length.
+        self.ahead.clear();
+        self.ahead.extend((0..x.len()).map(|i| v[i] * dt + gravity * (inv_mass[i] * dt * dt)));
+        self.reach.clear();
+        self.reach.extend(self.ahead.iter().map(|a| a.length()));
+        // Every triangle's box grown by its corners' look-ahead: the boxes hold the
+        // triangles wherever the look-ahead can take them within the frame.
+        let (faces, reach) = (&self.faces, &self.reach);
+        self.bvh.refit_padded(&self.tris, |f| faces[f].iter().fold(0.0f64, |m, &i| m.max(reach[i])));
         // Ends of edges that cross the garment now.
         self.intersecting.fill(false);
         self.crossings.clear();
@@ -129,13 +142,18 @@ impl SelfCollision {
         if !contacts {
             return;
         }
+        let (ahead, reach) = (&self.ahead, &self.reach);
         let margin = 2.0 * r + 0.5 * r;
-        // Point–triangle: faces near each particle that the look-ahead brings within the margin.
+        // Point–triangle: faces that the look-ahead may bring within the margin of each
+        // particle. The reference searches a box of ±3r around the particle, which misses
+        // layers approaching faster than 3r − margin per frame (they then pass through each
+        // other within the frame); this box, against the grown triangle boxes, holds every
+        // face that can meet the margin.
         for (i, &p) in x.iter().enumerate() {
             if self.intersecting[i] {
                 continue;
             }
-            let h = Vec3::splat(3.0 * r);
+            let h = Vec3::splat(margin + reach[i] + 1e-9);
             let (faces, tris, found) = (&self.faces, &self.tris, &mut self.point_triangle);
             self.bvh.for_each_in_box(p - h, p + h, |f| {
                 let face = faces[f];
@@ -145,29 +163,31 @@ impl SelfCollision {
                 let (w, _) = closest_on_triangle(p, &tris[f]);
                 let pc = at(&tris[f], w);
                 let dir = (pc - p).normalize_or_zero();
-                let dc = ahead(face[0]) * w[0] + ahead(face[1]) * w[1] + ahead(face[2]) * w[2];
-                let after = (pc - p).length() - ahead(i).dot(dir) + dc.dot(dir);
+                let dc = ahead[face[0]] * w[0] + ahead[face[1]] * w[1] + ahead[face[2]] * w[2];
+                let after = (pc - p).length() - ahead[i].dot(dir) + dc.dot(dir);
                 if after < margin {
                     let n = (tris[f][1] - tris[f][0]).cross(tris[f][2] - tris[f][0]).normalize_or_zero();
                     found.push(PointTriangle { particle: i, face: f, back: n.dot(p - tris[f][0]) < 0.0 });
                 }
             });
         }
-        // Edge–edge: face edges near each spring that the look-ahead brings within the margin.
-        // Edges whose boxes are farther apart than the margin plus both look-aheads cannot be.
-        let reach: Vec<f64> = (0..x.len()).map(|i| ahead(i).length()).collect();
+        // Edge–edge: face edges near each spring that the look-ahead may bring within the
+        // margin. Edges whose boxes are farther apart than the margin plus both look-aheads
+        // cannot be, so the search box is the spring's box grown by the margin and its own
+        // look-ahead, against the grown triangle boxes (the reference's cube of
+        // ±(|ab|/2 + 3r) around the midpoint, like its point–triangle box, misses fast
+        // approaches).
         for &([a, b], _) in edges {
             if self.intersecting[a] || self.intersecting[b] {
                 continue;
             }
             let (pa, pb) = (x[a], x[b]);
             let len = (pb - pa).length();
-            let h = Vec3::splat(len / 2.0 + 3.0 * r);
-            let mid = (pa + pb) / 2.0;
             let (lo, hi) = (pa.min(pb), pa.max(pb));
             let reach_ab = reach[a].max(reach[b]);
+            let h = Vec3::splat(margin + reach_ab + 1e-9);
             let (faces, owns, found) = (&self.faces, &self.owns, &mut self.edge_edge);
-            self.bvh.for_each_in_box(mid - h, mid + h, |f| {
+            self.bvh.for_each_in_box(lo - h, hi + h, |f| {
                 let face = faces[f];
                 for k in 0..3 {
                     let (e0, e1) = (face[k], face[(k + 1) % 3]);
@@ -186,8 +206,8 @@ impl SelfCollision {
                     let p_alpha = pa * (1.0 - ta) + pb * ta;
                     let p_beta = x[e0] * (1.0 - tb) + x[e1] * tb;
                     let dir = (p_beta - p_alpha).normalize_or_zero();
-                    let d_alpha = (ahead(a) * (1.0 - ta) + ahead(b) * ta).dot(dir);
-                    let d_beta = (ahead(e0) * (1.0 - tb) + ahead(e1) * tb).dot(dir);
+                    let d_alpha = (ahead[a] * (1.0 - ta) + ahead[b] * ta).dot(dir);
+                    let d_beta = (ahead[e0] * (1.0 - tb) + ahead[e1] * tb).dot(dir);
                     if dist - d_alpha + d_beta < margin {
                         found.push(EdgeEdge { ends: [a, b, e0, e1], dir });
                     }
@@ -257,5 +277,41 @@ impl SelfCollision {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two horizontal triangles 0.5 cm apart, the upper one falling at 24 cm/s: within the
+    /// frame it reaches the lower one. The reference's box of ±3r around a particle does not
+    /// reach 0.5 cm, so it finds no contact and the layers pass through each other; the
+    /// look-ahead box finds the point–triangle and edge–edge contacts.
+    #[test]
+    fn fast_approaching_layers_get_contacts() {
+        let x = vec![
+            Vec3::new(-2.0, 0.0, -2.0),
+            Vec3::new(2.0, 0.0, -2.0),
+            Vec3::new(0.0, 0.0, 2.0),
+            Vec3::new(-0.5, 0.5, 0.3),
+            Vec3::new(0.5, 0.5, 0.3),
+            Vec3::new(0.0, 0.5, -0.6),
+        ];
+        let faces = vec![[0, 1, 2], [3, 4, 5]];
+        let edges: Vec<([usize; 2], f64)> = [[0, 1], [1, 2], [0, 2], [3, 4], [4, 5], [3, 5]].map(|e| (e, 1.0)).to_vec();
+        let inv_mass = vec![1.0; 6];
+        let falling = |speed: f64| {
+            [Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, Vec3::new(0.0, -speed, 0.0), Vec3::new(0.0, -speed, 0.0), Vec3::new(0.0, -speed, 0.0)]
+        };
+        let mut sc = SelfCollision::new(faces, &x);
+        sc.detect(&x, &falling(24.0), &inv_mass, &edges, (Vec3::ZERO, 1.0 / 60.0, 0.1), true);
+        let particles: Vec<usize> = sc.point_triangle.iter().map(|c| c.particle).collect();
+        assert_eq!(particles, [3, 4, 5]);
+        // Above the lower triangle, whose normal (0→1)×(0→2) points down.
+        assert!(sc.point_triangle.iter().all(|c| c.face == 0 && c.back));
+        // At rest the same layers are too far apart for a contact.
+        sc.detect(&x, &falling(0.0), &inv_mass, &edges, (Vec3::ZERO, 1.0 / 60.0, 0.1), true);
+        assert!(sc.point_triangle.is_empty() && sc.edge_edge.is_empty());
     }
 }
