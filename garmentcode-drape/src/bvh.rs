@@ -113,15 +113,8 @@ impl Bvh {
 
     /// Recomputes the boxes for moved corners (same triangles, same order).
     pub fn refit(&mut self, tris: &[[Vec3; 3]]) {
-        self.refit_padded(tris, |_| 0.0);
-    }
-
-    /// [`Bvh::refit`] with the box of triangle `i` grown by `pad(i)` on every side.
-    pub fn refit_padded(&mut self, tris: &[[Vec3; 3]], pad: impl Fn(usize) -> f64) {
-        for (i, (b, t)) in self.boxes.iter_mut().zip(tris).enumerate() {
-            let (lo, hi) = bounds(t);
-            let p = Vec3::splat(pad(i));
-            *b = (lo - p, hi + p);
+        for (b, t) in self.boxes.iter_mut().zip(tris) {
+            *b = bounds(t);
         }
         // Children always follow their parent, so a backward sweep sees them first.
         for n in (0..self.nodes.len()).rev() {
@@ -185,6 +178,12 @@ impl Bvh {
         best
     }
 
+    /// Whether the box of triangle `i` (as of the last refit) meets the box `[lo, hi]`.
+    pub fn meets(&self, i: usize, lo: Vec3, hi: Vec3) -> bool {
+        let (b_lo, b_hi) = self.boxes[i];
+        !(b_hi.cmplt(lo).any() || b_lo.cmpgt(hi).any())
+    }
+
     /// Calls `hit(face)` for every triangle whose box (as of the last refit) meets the box
     /// `[lo, hi]`, in the tree's order.
     pub fn for_each_in_box(&self, lo: Vec3, hi: Vec3, mut hit: impl FnMut(usize)) {
@@ -202,8 +201,7 @@ impl Bvh {
             }
             if node.count > 0 {
                 for &i in &self.order[node.start as usize..(node.start + node.count) as usize] {
-                    let (b_lo, b_hi) = self.boxes[i as usize];
-                    if !(b_hi.cmplt(lo).any() || b_lo.cmpgt(hi).any()) {
+                    if self.meets(i as usize, lo, hi) {
                         hit(i as usize);
                     }
                 }
@@ -312,6 +310,27 @@ mod tests {
             assert!((hit.dist2 - brute).abs() < 1e-12, "{p}: {} vs {brute}", hit.dist2);
         }
         assert!(bvh.closest(&tris, Vec3::new(5.0, 100.0, 5.0), 1.0).is_none());
+    }
+
+    #[test]
+    fn box_queries_report_exactly_the_triangles_whose_boxes_meet() {
+        let tris = grid();
+        let bvh = Bvh::new(&tris);
+        for k in 0..100 {
+            let f = k as f64;
+            let c = Vec3::new((f * 0.37) % 12.0 - 1.0, (f * 0.53) % 3.0 - 1.0, (f * 0.71) % 12.0 - 1.0);
+            let (lo, hi) = (c - Vec3::splat(0.3 + f * 0.01), c + Vec3::splat(0.3 + f * 0.01));
+            let mut found = Vec::new();
+            bvh.for_each_in_box(lo, hi, |i| found.push(i));
+            found.sort_unstable();
+            let brute: Vec<usize> = (0..tris.len())
+                .filter(|&i| {
+                    let (a, b) = bounds(&tris[i]);
+                    !(b.cmplt(lo).any() || a.cmpgt(hi).any())
+                })
+                .collect();
+            assert_eq!(found, brute, "box around {c}");
+        }
     }
 
     #[test]
