@@ -5,7 +5,8 @@
 //!
 //! `BODY.obj` may also be the name of a built-in body (`mean_all`, ...): its mesh and parts.
 //!
-//! Experiments: `DRAPE_SELF_COLLISION=0` turns self-collision off; `DRAPE_BOXMESH=CASE_DIR`
+//! Experiments: `DRAPE_SELF_COLLISION=0` turns self-collision off; `DRAPE_JITTER=CM` moves
+//! the interior vertices of every panel by up to CM in the panel's plane; `DRAPE_BOXMESH=CASE_DIR`
 //! drapes the reference's own box mesh of a case folder instead of ours (its
 //! `CASE_boxmesh.obj`, `CASE_sim_segmentation.txt`, `CASE_vertex_labels.yaml`, and the rest
 //! lengths of `CASE_orig_lens.pickle` written as `i j length` lines to `OUT_DIR/orig_lens.txt`,
@@ -30,6 +31,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         mesh = reference_mesh(mesh, Path::new(dir), &out.join("orig_lens.txt"))?;
     }
     let measurements = garmentcode::Body::from_yaml(&std::fs::read_to_string(measurements)?, measurements)?;
+    if let Some(amount) = std::env::var("DRAPE_JITTER").ok().and_then(|a| a.parse::<f64>().ok()) {
+        jitter(&mut mesh, amount);
+    }
     let mut body = match body.strip_suffix(".obj") {
         Some(_) => BodyMesh::load(body.as_ref())?,
         None => BodyMesh::for_body(body, &measurements)?,
@@ -61,6 +65,29 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     println!("{} vertices: {:?}", mesh.vertices.len(), result.stats);
     Ok(())
+}
+
+/// Moves every interior vertex of every panel (but those of faces along a seam) by up to
+/// `amount` cm in its panel's plane (a fixed pseudo-random offset per vertex), so that the
+/// mesh is no longer a lattice.
+fn jitter(mesh: &mut BoxMesh, amount: f64) {
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    // Vertices of faces along a seam keep their place: their rest lengths are given.
+    let fixed: std::collections::HashSet<usize> = mesh.rest_lengths.iter().flat_map(|(e, _)| *e).collect();
+    for panel in &mesh.panels {
+        for local in panel.n_boundary..panel.points.len() {
+            let offset = garmentcode::Vec2::new(next(), next()) * amount;
+            if !fixed.contains(&panel.global[local]) {
+                mesh.vertices[panel.global[local]] = panel.to_3d(panel.points[local] + offset);
+            }
+        }
+    }
 }
 
 /// Our box mesh's panels with the vertices, faces, segmentation, labels and rest lengths of
