@@ -18,6 +18,7 @@ here=$(cd "$(dirname "$0")/../.." && pwd)
 cargo build --release -q -p garmentcode-drape --example drape_case
 drape=${CARGO_TARGET_DIR:-$here/target}/release/examples/drape_case
 "$cli" sample --n "$n" --seed "$seed" --out "$out/designs" --bodies "${BODY_NAMES:-mean_all}"
+mkdir -p "$out/drapes"
 : > "$out/results.txt"
 for dir in "$out"/designs/rand_*; do
     name=$(basename "$dir")
