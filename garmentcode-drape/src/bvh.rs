@@ -51,6 +51,8 @@ pub(crate) struct Closest {
 pub(crate) struct Bvh {
     nodes: Vec<Node>,
     order: Vec<u32>,
+    /// Box of each triangle (lower, upper corner), as of the last refit.
+    boxes: Vec<(Vec3, Vec3)>,
 }
 
 fn bounds(t: &[Vec3; 3]) -> (Vec3, Vec3) {
@@ -66,7 +68,11 @@ fn box_dist2(p: Vec3, lo: Vec3, hi: Vec3) -> f64 {
 impl Bvh {
     /// The tree over `tris`.
     pub fn new(tris: &[[Vec3; 3]]) -> Bvh {
-        let mut bvh = Bvh { nodes: Vec::with_capacity(2 * tris.len() / LEAF + 1), order: (0..tris.len() as u32).collect() };
+        let mut bvh = Bvh {
+            nodes: Vec::with_capacity(2 * tris.len() / LEAF + 1),
+            order: (0..tris.len() as u32).collect(),
+            boxes: vec![(Vec3::ZERO, Vec3::ZERO); tris.len()],
+        };
         let centroids: Vec<Vec3> = tris.iter().map(|t| (t[0] + t[1] + t[2]) / 3.0).collect();
         bvh.nodes.push(Node { lo: Vec3::ZERO, hi: Vec3::ZERO, start: 0, count: 0 });
         bvh.build(0, 0, tris.len(), &centroids);
@@ -107,13 +113,16 @@ impl Bvh {
 
     /// Recomputes the boxes for moved corners (same triangles, same order).
     pub fn refit(&mut self, tris: &[[Vec3; 3]]) {
+        for (b, t) in self.boxes.iter_mut().zip(tris) {
+            *b = bounds(t);
+        }
         // Children always follow their parent, so a backward sweep sees them first.
         for n in (0..self.nodes.len()).rev() {
             let node = self.nodes[n];
             let (lo, hi) = if node.count > 0 {
                 self.order[node.start as usize..(node.start + node.count) as usize]
                     .iter()
-                    .map(|&i| bounds(&tris[i as usize]))
+                    .map(|&i| self.boxes[i as usize])
                     .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), (a, b)| (lo.min(a), hi.max(b)))
             } else {
                 let (l, r) = (self.nodes[node.start as usize], self.nodes[node.start as usize + 1]);
@@ -169,7 +178,14 @@ impl Bvh {
         best
     }
 
-    /// Calls `hit(face)` for every triangle whose box meets the box `[lo, hi]`.
+    /// Whether the box of triangle `i` (as of the last refit) meets the box `[lo, hi]`.
+    pub fn meets(&self, i: usize, lo: Vec3, hi: Vec3) -> bool {
+        let (b_lo, b_hi) = self.boxes[i];
+        !(b_hi.cmplt(lo).any() || b_lo.cmpgt(hi).any())
+    }
+
+    /// Calls `hit(face)` for every triangle whose box (as of the last refit) meets the box
+    /// `[lo, hi]`, in the tree's order.
     pub fn for_each_in_box(&self, lo: Vec3, hi: Vec3, mut hit: impl FnMut(usize)) {
         if self.nodes.is_empty() {
             return;
@@ -185,7 +201,9 @@ impl Bvh {
             }
             if node.count > 0 {
                 for &i in &self.order[node.start as usize..(node.start + node.count) as usize] {
-                    hit(i as usize);
+                    if self.meets(i as usize, lo, hi) {
+                        hit(i as usize);
+                    }
                 }
             } else if top + 2 <= stack.len() {
                 stack[top] = node.start + 1;
@@ -292,6 +310,27 @@ mod tests {
             assert!((hit.dist2 - brute).abs() < 1e-12, "{p}: {} vs {brute}", hit.dist2);
         }
         assert!(bvh.closest(&tris, Vec3::new(5.0, 100.0, 5.0), 1.0).is_none());
+    }
+
+    #[test]
+    fn box_queries_report_exactly_the_triangles_whose_boxes_meet() {
+        let tris = grid();
+        let bvh = Bvh::new(&tris);
+        for k in 0..100 {
+            let f = k as f64;
+            let c = Vec3::new((f * 0.37) % 12.0 - 1.0, (f * 0.53) % 3.0 - 1.0, (f * 0.71) % 12.0 - 1.0);
+            let (lo, hi) = (c - Vec3::splat(0.3 + f * 0.01), c + Vec3::splat(0.3 + f * 0.01));
+            let mut found = Vec::new();
+            bvh.for_each_in_box(lo, hi, |i| found.push(i));
+            found.sort_unstable();
+            let brute: Vec<usize> = (0..tris.len())
+                .filter(|&i| {
+                    let (a, b) = bounds(&tris[i]);
+                    !(b.cmplt(lo).any() || a.cmpgt(hi).any())
+                })
+                .collect();
+            assert_eq!(found, brute, "box around {c}");
+        }
     }
 
     #[test]

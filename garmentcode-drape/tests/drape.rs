@@ -183,11 +183,13 @@ fn the_built_in_body_is_the_reference_mean_all_with_its_parts() {
     assert!(cut.to_string().contains("cut.body") && cut.to_string().contains("length"), "{cut}");
 }
 
-/// The t-shirt (7,000 vertices) takes about 40 s in release, far longer in the dev
+/// The t-shirt (7,000 vertices) takes about a minute in release, far longer in the dev
 /// profile: `cargo test --release -p garmentcode-drape --test drape -- --ignored`.
-/// Not yet as clean as the reference's drape: about 60 edges end crossing the garment
-/// where the front sleeves fold at the armholes (the judge allows none; the reference's
-/// own acceptance allows 300); its shape agrees (panel centroids within 1 cm).
+/// Not yet as clean as the reference's drape: about 40 edges end crossing the garment
+/// where the front panels fold through themselves (the judge allows none; the reference's
+/// own acceptance allows 300); its shape agrees (panel centroids within 1 cm). The folds
+/// come from our box mesh, a regular lattice (see docs/drape.md): the reference's own box
+/// mesh of this t-shirt drapes without a crossing.
 #[test]
 #[ignore]
 fn t_shirt_drapes_like_the_reference() {

@@ -24,6 +24,20 @@ pub const MAX_SIZES: usize = 20;
 
 /// A size chart read from a file: its name and its sizes in the file's order.
 ///
+/// The file lists sizes by the measurements a chart gives over one of the
+/// built-in bodies; every other measurement of a size follows its base in
+/// proportion (see [`crate::PROPORTIONS`]), as in a body file with `base:`:
+///
+/// ```yaml
+/// size_chart:
+///   name: Women, height 168
+///   base: mean_female
+///   units: cm            # or in
+///   sizes:
+///     "36": {bust: 84, waist: 68, hips: 92}
+///     "38": {bust: 88, waist: 72, hips: 96}
+/// ```
+///
 /// ```
 /// use garmentcode::SizeChart;
 /// let female = "body:\n  height: 166\n  head_l: 25.5\n  waist_line: 35.8\n  waist_over_bust_line: 40\n  bust_line: 25.6\n  hips_line: 22.6\n  crotch_hip_diff: 7.9\n  armscye_depth: 12.6\n  arm_length: 51.6\n  bust: 97.4\n  underbust: 80.7\n  waist: 80.3\n  hips: 104\n  leg_circ: 60.7\n  wrist: 15.9\n  neck_w: 17.8\n  shoulder_w: 34.7\n  back_width: 46.2\n  waist_back_width: 37.8\n  hip_back_width: 55.7\n  bust_points: 16.2\n  bum_points: 17.7\n  shoulder_incl: 20.9\n  hip_inclination: 12.7\n  arm_pose_angle: 45.5\n";
@@ -42,7 +56,8 @@ pub struct SizeChart {
 }
 
 impl SizeChart {
-    /// Reads a size chart file (see the [module documentation](self)); `bases` are the
+    /// Reads a size chart file (`size_chart:` with `name`, `base`, `units` and `sizes`,
+    /// each size a mapping of measurements as in a body file); `bases` are the
     /// bodies a chart may start from (`garments::builtin::BODIES`). Every problem is
     /// listed with its line, the size and the measurement.
     pub fn from_yaml(text: &str, file: &str, bases: &[(&str, &str)]) -> Result<SizeChart, BodyError> {
