@@ -110,7 +110,7 @@ fn drape_writes_every_file_reads_back_and_is_deterministic() {
     assert_eq!(report["fails"], serde_json::json!(["static_equilibrium"]));
     assert_eq!(report["frames"], 60);
     assert_eq!(report["fabric"]["name"], "default");
-    assert_eq!(report["body"]["mesh"], "the mesh of body mean_all");
+    assert_eq!(report["body"]["mesh"], "the built-in mesh of body mean_all");
     assert_eq!(report["settings"]["max_frames"], 60);
     let p99 = report["strain"]["seam"]["p99"].as_f64().unwrap();
     assert!(p99.is_finite() && p99 >= report["strain"]["seam"]["p50"].as_f64().unwrap());

@@ -199,7 +199,11 @@ pub fn load_body_mesh(file: Option<&Path>, name: &str, body: &garmentcode::Body)
 
 /// How `NAME_drape.json` names the mesh [`BodyMesh::for_body`] gives for the body `name`.
 pub fn body_mesh_source(name: &str) -> String {
-    format!("the mesh of body {name}")
+    if garmentcode_drape::body::BUILTIN.iter().any(|(n, _)| *n == name) {
+        format!("the built-in mesh of body {name}")
+    } else {
+        format!("a mannequin made from the measurements of {name}")
+    }
 }
 
 /// A progress line on stderr every 50 frames (overwritten in place on a terminal).
