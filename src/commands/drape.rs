@@ -193,7 +193,24 @@ pub fn load_fabric(arg: &str) -> Result<Fabric, CliError> {
 pub fn load_body_mesh(file: Option<&Path>, name: &str, body: &garmentcode::Body) -> Result<(BodyMesh, String), CliError> {
     match file {
         Some(f) => BodyMesh::load(f).map(|m| (m, f.display().to_string())).map_err(|e| CliError::Input(e.to_string())),
-        None => BodyMesh::for_body(name, body).map(|m| (m, body_mesh_source(name))).map_err(|e| CliError::Input(e.to_string())),
+        None => {
+            let name = body_mesh_name(name, body);
+            BodyMesh::for_body(&name, body).map(|m| (m, body_mesh_source(&name))).map_err(|e| CliError::Input(e.to_string()))
+        }
+    }
+}
+
+/// The name to ask [`BodyMesh::for_body`] for the body `name` with measurements `body`:
+/// `name` itself when it is a built-in body with exactly those measurements (its own
+/// mesh), else a name no built-in body has (a mannequin of the measurements), so that
+/// an edited body or a body file named like a built-in one is not draped on the
+/// built-in mesh.
+pub fn body_mesh_name(name: &str, body: &garmentcode::Body) -> String {
+    let unnamed = |b: &garmentcode::Body| garmentcode::Body { body_sample: None, ..b.clone() };
+    match garments::builtin::body(name) {
+        Some(builtin) if unnamed(&builtin) == unnamed(body) => name.to_string(),
+        Some(_) => format!("{name} (edited)"),
+        None => name.to_string(),
     }
 }
 
@@ -311,5 +328,20 @@ pub fn run(args: DrapeArgs) -> Result<i32, CliError> {
     } else {
         eprintln!("drape failed the reference's checks: {} (exit status {EXIT_UNSETTLED})", draped.fails.join(", "));
         Ok(EXIT_UNSETTLED)
+    }
+}
+
+#[cfg(test)]
+mod body_mesh_tests {
+    use super::body_mesh_name;
+
+    #[test]
+    fn only_a_built_in_body_as_it_is_drapes_on_its_built_in_mesh() {
+        let mut body = garments::builtin::body("mean_all").unwrap();
+        body.body_sample = Some("mean_all_apart".into());
+        assert_eq!(body_mesh_name("mean_all", &body), "mean_all", "the sampler's pose name does not matter");
+        body.waist += 10.0;
+        assert_eq!(body_mesh_name("mean_all", &body), "mean_all (edited)", "an edited body gets a mannequin");
+        assert_eq!(body_mesh_name("me", &body), "me");
     }
 }

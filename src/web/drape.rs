@@ -122,7 +122,7 @@ pub fn start_with(input: &Json, bounds: Bounds) -> Result<String, ApiError> {
         Ok(r) => r,
         Err(reason) => return Ok(refused(reason)),
     };
-    let body_mesh = match BodyMesh::for_body(&m.body_name, &m.body) {
+    let body_mesh = match BodyMesh::for_body(&crate::commands::drape::body_mesh_name(&m.body_name, &m.body), &m.body) {
         Ok(b) => b,
         Err(e) => return Ok(refused(format!("no body to drape on: {e}"))),
     };

@@ -173,7 +173,10 @@ impl<'a> Settings<'a> {
             let meshes = (0..sampler.bodies().len())
                 .map(|b| {
                     let name = &sampler.bodies()[b].name;
-                    bodies(b).map(|body| garmentcode_drape::BodyMesh::for_body(name, &body).map_err(|e| e.to_string()))
+                    bodies(b).map(|body| {
+                        let name = crate::commands::drape::body_mesh_name(name, &body);
+                        garmentcode_drape::BodyMesh::for_body(&name, &body).map_err(|e| e.to_string())
+                    })
                 })
                 .collect();
             DrapeConfig { fabric, max_frames, max_seconds, meshes }
@@ -334,7 +337,7 @@ fn drape_sample(
     let name = &s.sampler.bodies()[sample.body].name;
     let setup = crate::commands::drape::DrapeSetup {
         body: body_mesh,
-        body_source: &crate::commands::drape::body_mesh_source(name),
+        body_source: &crate::commands::drape::body_mesh_source(&crate::commands::drape::body_mesh_name(name, &measurements)),
         measurements: (&measurements, name),
         fabric: &config.fabric,
         max_frames: config.max_frames,
