@@ -185,7 +185,12 @@ def test_a_body_may_give_a_few_measurements_over_a_built_in_body(tmp_path):
         body = gc.Body.from_yaml(source) if isinstance(source, str) else gc.Body(source)
         m = body.measurements
         assert (m["waist"], m["hips"]) == (70.0, 101.5)
-        assert {k: v for k, v in m.items() if k not in ("waist", "hips")} == {k: v for k, v in female.measurements.items() if k not in ("waist", "hips")}
+        # What follows the waist and the hips is scaled with them; the rest is the base's.
+        f = female.measurements
+        assert m["waist_back_width"] == pytest.approx(f["waist_back_width"] * 70.0 / f["waist"])
+        assert m["hip_back_width"] == pytest.approx(f["hip_back_width"] * 101.5 / f["hips"])
+        follows = ("waist", "hips", "waist_back_width", "hip_back_width", "leg_circ", "bum_points")
+        assert {k: v for k, v in m.items() if k not in follows} == {k: v for k, v in f.items() if k not in follows}
     path = tmp_path / "me.yaml"
     path.write_text("body:\n  base: mean_female\n  waist: 70.0\n")
     assert gc.build("t-shirt", str(path)).body.measurements["waist"] == 70.0
