@@ -4,7 +4,7 @@
 
 use garmentcode::Vec3;
 use garmentcode::mesh::{BoxMesh, VertexLabel};
-use garmentcode_drape::{BodyError, BodyMesh, Drape, DrapeError, Settings, drape, sim_obj};
+use garmentcode_drape::{BodyError, BodyMesh, Drape, DrapeError, Settings, Strain, drape, sim_obj};
 
 const MEAN_ALL: &str = include_str!("data/mean_all.yaml");
 
@@ -19,13 +19,6 @@ fn settings(pattern: &garmentcode::Pattern) -> Settings {
     Settings::for_body(&body).with_panel_labels(pattern)
 }
 
-fn percentile(mut v: Vec<f64>, q: f64) -> f64 {
-    v.sort_by(f64::total_cmp);
-    let pos = q / 100.0 * (v.len() - 1) as f64;
-    let (lo, hi) = (pos.floor() as usize, pos.ceil() as usize);
-    v[lo] + (v[hi] - v[lo]) * (pos - lo as f64)
-}
-
 /// The judge's physical checks: finite, at most 0.2 % of vertices deeper than 0.2 cm in the
 /// body, p99 strain of seam edges ≤ 20 % and of the others ≤ 8 %, at most `crossings`
 /// edges crossing the garment (the judge allows none), the top within 10 cm of the box mesh's.
@@ -35,24 +28,8 @@ fn assert_physical(mesh: &BoxMesh, body: &BodyMesh, result: &Drape, crossings: u
     assert!(x.iter().all(|p| p.is_finite()));
     let deep = x.iter().filter(|p| body.signed_distance(**p) < -0.2).count();
     assert!(deep as f64 <= 0.002 * x.len() as f64, "{deep} vertices deeper than 0.2 cm inside the body");
-    let rest: std::collections::HashMap<[usize; 2], f64> = mesh.rest_lengths.iter().copied().collect();
-    let mut edges: Vec<[usize; 2]> = mesh
-        .faces
-        .iter()
-        .flat_map(|f| [0, 1, 2].map(|k| (f.vertices[k], f.vertices[(k + 1) % 3])))
-        .map(|(a, b)| [a.min(b), a.max(b)])
-        .collect();
-    edges.sort_unstable();
-    edges.dedup();
-    let (mut seam, mut other) = (Vec::new(), Vec::new());
-    for e in edges {
-        let len = (x[e[0]] - x[e[1]]).length();
-        match rest.get(&e) {
-            Some(r) => seam.push((len / r.max(1e-9) - 1.0).abs()),
-            None => other.push((len / (mesh.vertices[e[0]] - mesh.vertices[e[1]]).length().max(1e-9) - 1.0).abs()),
-        }
-    }
-    let (seam99, other99) = (percentile(seam, 99.0), percentile(other, 99.0));
+    let strain = Strain::of(mesh, x);
+    let (seam99, other99) = (strain.seam_p99, strain.fabric_p99);
     assert!(seam99 <= 0.20, "seams not closed: p99 strain {seam99}");
     assert!(other99 <= 0.08, "stretched: p99 strain {other99}");
     assert!(result.stats.self_intersections <= crossings, "{} edges cross the garment", result.stats.self_intersections);

@@ -16,24 +16,8 @@ pub fn run(args: PrintArgs) -> Result<i32, CliError> {
     }
     let file = &args.file;
     let pattern = read_pattern(file)?;
-    for o in &args.seam_edges {
-        let panel = pattern.panel(&o.panel).ok_or_else(|| CliError::Usage(format!("--seam-edge: no panel '{}' in {file}", o.panel)))?;
-        if o.edge.is_some_and(|e| e >= panel.edges.len()) {
-            return Err(CliError::Usage(format!("--seam-edge: panel '{}' has {} edges", o.panel, panel.edges.len())));
-        }
-    }
-    let opts = PrintOptions {
-        seam: args.seam,
-        hem: args.hem,
-        edge_seams: args.seam_edges.clone(),
-        paper: args.paper,
-        fabric_width: args.fabric_width,
-        garment: args
-            .garment
-            .clone()
-            .unwrap_or_else(|| crate::commands::mesh::prefix(file).chars().take(garmentcode::io::MAX_NAME_CHARS).collect()),
-        size: args.size.clone(),
-    };
+    check_seam_edges(&args, &pattern, file)?;
+    let opts = print_options(&args, crate::commands::mesh::prefix(file), args.size.clone());
     for problem in garmentcode::validate(&pattern).iter().filter(|x| x.kind == garmentcode::ProblemKind::SelfIntersection) {
         eprintln!("warning: {file}: {problem}; its cut line follows the crossing outline and needs checking by hand");
     }
@@ -78,7 +62,8 @@ fn size_run(args: PrintArgs) -> Result<i32, CliError> {
     if sizes.len() > garmentcode::MAX_SIZES {
         return Err(CliError::Usage(format!("--sizes: {} sizes; a size run has at most {}", sizes.len(), garmentcode::MAX_SIZES)));
     }
-    let garment = args.garment.clone().unwrap_or_else(|| design_label.chars().take(garmentcode::io::MAX_NAME_CHARS).collect());
+    let opts = print_options(&args, design_label.clone(), String::new());
+    let garment = opts.garment.clone();
     let mut built = Vec::new();
     let mut report = format!("Size run of {design_label}{}\n", if from.is_empty() { String::new() } else { format!(" from the {from}") });
     for (name, body) in &sizes {
@@ -106,15 +91,6 @@ fn size_run(args: PrintArgs) -> Result<i32, CliError> {
     if built.is_empty() {
         return Err(CliError::Rejected(format!("{design_label}: no size could be built (see the warnings above); nothing written")));
     }
-    let opts = PrintOptions {
-        seam: args.seam,
-        hem: args.hem,
-        edge_seams: args.seam_edges.clone(),
-        paper: args.paper,
-        fabric_width: args.fabric_width,
-        garment,
-        size: String::new(),
-    };
     let mut set = OutputSet::default();
     for (name, bytes) in size_run_files(&built, &opts).map_err(|e| CliError::Input(format!("{design_label}: {e}")))? {
         set.add(&name, bytes);
@@ -124,6 +100,30 @@ fn size_run(args: PrintArgs) -> Result<i32, CliError> {
     write_folder(&set, &args.out, args.force)?;
     eprintln!("wrote {}: {} of {} sizes nested ({design_label})", args.out.display(), built.len(), sizes.len());
     Ok(0)
+}
+
+/// The print options of the command line; the garment's name defaults to `default_garment`.
+fn print_options(args: &PrintArgs, default_garment: String, size: String) -> PrintOptions {
+    PrintOptions {
+        seam: args.seam,
+        hem: args.hem,
+        edge_seams: args.seam_edges.clone(),
+        paper: args.paper,
+        fabric_width: args.fabric_width,
+        garment: args.garment.clone().unwrap_or_else(|| default_garment.chars().take(garmentcode::io::MAX_NAME_CHARS).collect()),
+        size,
+    }
+}
+
+/// Every `--seam-edge` names a panel of `pattern` (from `what`) and one of its edges.
+fn check_seam_edges(args: &PrintArgs, pattern: &garmentcode::Pattern, what: &str) -> Result<(), CliError> {
+    for o in &args.seam_edges {
+        let panel = pattern.panel(&o.panel).ok_or_else(|| CliError::Usage(format!("--seam-edge: no panel '{}' in {what}", o.panel)))?;
+        if o.edge.is_some_and(|e| e >= panel.edges.len()) {
+            return Err(CliError::Usage(format!("--seam-edge: panel '{}' has {} edges", o.panel, panel.edges.len())));
+        }
+    }
+    Ok(())
 }
 
 /// A measurement in the report: cm with one decimal.
