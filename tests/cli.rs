@@ -850,6 +850,10 @@ fn a_size_run_prints_every_size_nested_and_names_the_sizes_it_leaves_out() {
     let o = run(&["print", spec.to_str().unwrap(), "--sizes", "mean_all", "--out", "none"], &dir);
     assert_eq!(code(&o), 2);
     assert!(stderr(&o).contains("a size run builds the design on every size"), "{}", stderr(&o));
+    let o = run(&["print", "t-shirt", "--sizes", "mean_all", "--seam-edge", "nope=2", "--out", "none"], &dir);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("--seam-edge: no panel 'nope' in t-shirt (size mean_all)"), "{}", stderr(&o));
+    assert!(!dir.join("none").exists());
     let o = run(&["print", "t-shirt", "--sizes", "mean_all", "--size-chart", "x.yaml", "--out", "none"], &dir);
     assert_eq!(code(&o), 2, "--sizes and --size-chart exclude each other");
 }

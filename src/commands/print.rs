@@ -91,6 +91,9 @@ fn size_run(args: PrintArgs) -> Result<i32, CliError> {
     if built.is_empty() {
         return Err(CliError::Rejected(format!("{design_label}: no size could be built (see the warnings above); nothing written")));
     }
+    for (name, pattern) in &built {
+        check_seam_edges(&args, pattern, &format!("{design_label} (size {name})"))?;
+    }
     let mut set = OutputSet::default();
     for (name, bytes) in size_run_files(&built, &opts).map_err(|e| CliError::Input(format!("{design_label}: {e}")))? {
         set.add(&name, bytes);
