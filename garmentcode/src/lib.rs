@@ -95,7 +95,10 @@ pub use params::spec::{Kind, ParamSpec, Range, Value};
 pub use params::{Choice, ParamValue, Params, join_path};
 pub use pattern::order::panel_order;
 pub use pattern::validate::{Problem, ProblemKind, Severity, structural_errors, validate};
-pub use pattern::{Curvature, EdgeSpec, PanelSpec, Pattern, Properties, StitchSide, StitchSpec};
+pub use pattern::{
+    Curvature, EXTENSION_VERSION, EdgePlace, EdgeSpec, Hole, HoleKind, InnerLine, InnerSide, InnerStitch, Layer, LineKind, PanelSpec,
+    Pattern, Properties, StitchSide, StitchSpec,
+};
 pub use remap::{IdMap, Remap};
 pub use rotation::Rotation;
 pub use size_chart::{MAX_SIZES, SizeChart};

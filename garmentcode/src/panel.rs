@@ -404,13 +404,13 @@ impl PanelId {
             specs.last_mut().expect("non-empty").endpoints[1] = 0;
         }
         let d = a.pd(self);
-        Ok(PanelSpec {
-            name,
-            translation: d.translation.into(),
-            rotation: d.rotation.as_euler_xyz_degrees(),
-            vertices: vertices.into_iter().map(|v| v.into()).collect(),
-            edges: specs,
-            label: (!d.label.is_empty()).then(|| d.label.clone()),
-        })
+        Ok(PanelSpec::new(
+            &name,
+            d.translation.into(),
+            d.rotation.as_euler_xyz_degrees(),
+            vertices.into_iter().map(|v| v.into()).collect(),
+            specs,
+            (!d.label.is_empty()).then(|| d.label.clone()),
+        ))
     }
 }

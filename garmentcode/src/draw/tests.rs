@@ -33,6 +33,9 @@ fn small() -> Pattern {
             edge(3, 0, None),
         ],
         label: None,
+        holes: Vec::new(),
+        lines: Vec::new(),
+        layer: Default::default(),
     });
     p.panels.push(PanelSpec {
         name: "back".into(),
@@ -41,6 +44,9 @@ fn small() -> Pattern {
         vertices: vec![[0.0, 0.0], [20.0, 0.0], [10.0, 15.0]],
         edges: vec![edge(0, 1, Some(Curvature::Cubic([0.3, -0.1], [0.7, 0.1]))), edge(1, 2, None), edge(2, 0, None)],
         label: None,
+        holes: Vec::new(),
+        lines: Vec::new(),
+        layer: Default::default(),
     });
     p.stitches = vec![stitch(("front", 0), ("back", 0)), stitch(("back", 1), ("back", 2))];
     p

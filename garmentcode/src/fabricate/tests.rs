@@ -286,6 +286,9 @@ fn rectangle(w: f64, h: f64) -> Pattern {
         vertices: vec![[0.0, 0.0], [w, 0.0], [w, h], [0.0, h]],
         edges: vec![edge(0, 1), edge(1, 2), edge(2, 3), edge(3, 0)],
         label: None,
+        holes: Vec::new(),
+        lines: Vec::new(),
+        layer: Default::default(),
     });
     p
 }

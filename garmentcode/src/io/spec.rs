@@ -580,7 +580,7 @@ fn read_panel(name: &str, v: &Value, absolute: bool) -> Result<PanelSpec> {
         None | Some(Value::Null) => None,
         Some(l) => Some(string(l, &format!("{path}.label"))?.to_string()).filter(|s| !s.is_empty()),
     };
-    Ok(PanelSpec { name: name.to_string(), translation, rotation, vertices, edges, label })
+    Ok(PanelSpec::new(name, translation, rotation, vertices, edges, label))
 }
 
 fn read_edge(v: &Value, path: &str, vertices: &[[f64; 2]], absolute: bool) -> Result<EdgeSpec> {

@@ -6,12 +6,14 @@
 //! ([`Pattern::from_json`]) and writes the same layout ([`Pattern::to_json`]),
 //! deterministically.
 
+pub(crate) mod extension;
 pub(crate) mod order;
 pub(crate) mod validate;
 use crate::arc;
 use crate::edge::{Curve, Edge};
 use crate::math::Vec2;
 use crate::rotation::Rotation;
+pub use extension::{EXTENSION_VERSION, EdgePlace, Hole, HoleKind, InnerLine, InnerSide, InnerStitch, Layer, LineKind};
 
 /// A whole sewing pattern.
 ///
@@ -36,8 +38,11 @@ pub struct Pattern {
     pub name: String,
     /// Panels in file order.
     pub panels: Vec<PanelSpec>,
-    /// Stitches.
+    /// Stitches between outline edges.
     pub stitches: Vec<StitchSpec>,
+    /// Stitches with a side on a hole or an inner line (the format extension; empty
+    /// in the reference's patterns).
+    pub inner_stitches: Vec<InnerStitch>,
     /// Deterministic panel order by 3D location (written after the stitches).
     pub panel_order: Option<Vec<String>>,
     /// Legacy parametric-template parameters (always `{}` for GarmentCode output).
@@ -90,6 +95,12 @@ pub struct PanelSpec {
     pub edges: Vec<EdgeSpec>,
     /// Semantic label (`body`, `arm`, `leg`...).
     pub label: Option<String>,
+    /// Closed loops inside the outline (format extension; empty in the reference's).
+    pub holes: Vec<Hole>,
+    /// Lines inside the panel (format extension; empty in the reference's).
+    pub lines: Vec<InnerLine>,
+    /// Layer of a double-layer component ([`Layer::Outer`] in the reference's).
+    pub layer: Layer,
 }
 
 /// One edge as written.
@@ -187,6 +198,7 @@ impl Pattern {
             name: name.to_string(),
             panels: Vec::new(),
             stitches: Vec::new(),
+            inner_stitches: Vec::new(),
             panel_order: None,
             parameters: serde_json::Value::Object(Default::default()),
             parameter_order: serde_json::Value::Array(Vec::new()),
@@ -203,9 +215,43 @@ impl Pattern {
     pub fn is_empty(&self) -> bool {
         self.panels.is_empty()
     }
+
+    /// Whether the pattern says anything past the reference's format (holes, inner
+    /// lines, layers, stitches on them: [`Hole`], [`InnerLine`], [`Layer`], [`InnerStitch`]).
+    pub fn uses_extension(&self) -> bool {
+        !self.inner_stitches.is_empty() || self.panels.iter().any(PanelSpec::uses_extension)
+    }
 }
 
 impl PanelSpec {
+    /// A panel with no holes, no inner lines, on the outer layer (all the reference's
+    /// format holds).
+    pub fn new(
+        name: &str,
+        translation: [f64; 3],
+        rotation: [f64; 3],
+        vertices: Vec<[f64; 2]>,
+        edges: Vec<EdgeSpec>,
+        label: Option<String>,
+    ) -> PanelSpec {
+        PanelSpec {
+            name: name.to_string(),
+            translation,
+            rotation,
+            vertices,
+            edges,
+            label,
+            holes: Vec::new(),
+            lines: Vec::new(),
+            layer: Layer::Outer,
+        }
+    }
+
+    /// Whether the panel has holes, inner lines or a layer other than the outer one.
+    pub fn uses_extension(&self) -> bool {
+        !self.holes.is_empty() || !self.lines.is_empty() || self.layer != Layer::Outer
+    }
+
     /// Vertex `i` as a point.
     pub fn vertex(&self, i: usize) -> Vec2 {
         Vec2::from(self.vertices[i])

@@ -1,0 +1,141 @@
+//! What the flat pattern says past the reference's format (the GarmentCode paper's
+//! limitations): closed loops inside a panel ([`Hole`]: a diamond dart, a keyhole, a
+//! welt-pocket opening), lines inside a panel ([`InnerLine`]: fold lines, placement
+//! lines for pieces sewn on top, pleat folds), the layer a panel belongs to
+//! ([`Layer`]: an outer layer and its facing or lining) and stitches on any of those
+//! edges ([`InnerStitch`]).
+//!
+//! A pattern that uses none of them is exactly the reference's pattern: the fields are
+//! empty and nothing of them is written (see `docs/pattern-extension.md` for the file
+//! layout and what the reference's loader does with it).
+//!
+//! Hole and line geometry is held like an outline's: panel-local vertices and edges
+//! between them with the outline's relative curvature ([`EdgeSpec`]); a hole's edges
+//! form one closed loop over its own vertices, a line's edges an open chain over its
+//! own vertices.
+//!
+//! ```
+//! use garmentcode::{EdgePlace, EdgeSpec, Hole, HoleKind, InnerSide, InnerStitch};
+//!
+//! // A diamond dart: a closed loop of four edges, its sides sewn together in pairs.
+//! let dart = Hole {
+//!     name: "waist_dart".into(),
+//!     kind: HoleKind::Dart,
+//!     vertices: vec![[10.0, 20.0], [11.5, 35.0], [10.0, 50.0], [8.5, 35.0]],
+//!     edges: (0..4).map(|i| EdgeSpec { endpoints: [i, (i + 1) % 4], label: None, curvature: None }).collect(),
+//! };
+//! let side = |edge| InnerSide { panel: "front".into(), place: EdgePlace::Hole(0), edge };
+//! let seam = InnerStitch { sides: [side(0), side(3)], right_wrong: false };
+//! assert_eq!(dart.edges.len(), 4);
+//! assert_eq!(seam.sides[1].place, EdgePlace::Hole(0));
+//! ```
+
+use super::EdgeSpec;
+
+/// A closed loop of edges inside a panel's outline.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Hole {
+    /// Name, unique among the panel's holes and lines.
+    pub name: String,
+    /// What the loop is: cut out, or a dart sewn closed.
+    pub kind: HoleKind,
+    /// Panel-local vertices (cm).
+    pub vertices: Vec<[f64; 2]>,
+    /// The loop's edges in order; the last ends where the first starts.
+    pub edges: Vec<EdgeSpec>,
+}
+
+/// What a [`Hole`] is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum HoleKind {
+    /// Cut out of the fabric (a keyhole, a welt-pocket opening): an internal cut-out on
+    /// prints, an opening in the mesh.
+    Cut,
+    /// A dart inside the panel (a diamond dart): its sides are sewn together, the
+    /// fabric between them is folded away. Printed as marked lines with drill holes, an
+    /// opening in the mesh whose sides are stitched.
+    Dart,
+}
+
+/// An open line of edges inside a panel (not on its outline).
+#[derive(Clone, Debug, PartialEq)]
+pub struct InnerLine {
+    /// Name, unique among the panel's holes and lines.
+    pub name: String,
+    /// What the line is for.
+    pub kind: LineKind,
+    /// Panel-local vertices (cm).
+    pub vertices: Vec<[f64; 2]>,
+    /// The line's edges in order, each starting where the one before ends.
+    pub edges: Vec<EdgeSpec>,
+}
+
+/// What an [`InnerLine`] is for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LineKind {
+    /// The panel is folded along the line (a one-piece sleeve, a double cuff or
+    /// turtleneck folded along its middle): the AAMA mirror line on prints, a row of
+    /// mesh edges. `angle` is the fold's dihedral turn in degrees at which the box mesh
+    /// places the side of the panel to the line's right (0: flat; 180: folded flat
+    /// over the left side).
+    Fold {
+        /// Turn of the right side about the line, degrees, 0 to 180.
+        angle: f64,
+    },
+    /// Where a piece sewn on top goes (a patch pocket, a flounce): an internal line
+    /// on prints with drill holes at its corners, a row of mesh edges that stitches
+    /// may use.
+    Placement,
+    /// The fold of a pleat (the edge of the fabric that is folded over).
+    PleatFold,
+    /// Where a pleat's fold is laid down.
+    PleatPlacement,
+}
+
+/// Which layer of a double-layer component a panel is.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Layer {
+    /// The outside (every panel of the reference's format).
+    #[default]
+    Outer,
+    /// A facing: the inside layer of a collar, cuff or neckline, joined to the outer
+    /// layer along edges.
+    Facing,
+    /// A lining.
+    Lining,
+}
+
+/// Where a stitched edge lies in its panel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum EdgePlace {
+    /// On the outline (`edges`).
+    Outline,
+    /// On the panel's hole with this index.
+    Hole(usize),
+    /// On the panel's inner line with this index.
+    Line(usize),
+}
+
+/// One side of an [`InnerStitch`].
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct InnerSide {
+    /// Panel name.
+    pub panel: String,
+    /// Outline, hole or line of the panel.
+    pub place: EdgePlace,
+    /// Edge index in that outline, hole or line.
+    pub edge: usize,
+}
+
+/// A stitch with at least one side on a hole or an inner line (stitches between
+/// outline edges only are [`StitchSpec`](super::StitchSpec)s, as the reference has them).
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub struct InnerStitch {
+    /// Both sides.
+    pub sides: [InnerSide; 2],
+    /// One fabric is flipped.
+    pub right_wrong: bool,
+}
+
+/// Version of the format extension this code writes (`properties.extension_version`).
+pub const EXTENSION_VERSION: u32 = 1;
