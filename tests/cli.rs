@@ -1,39 +1,10 @@
 //! The `garmentcode` command line as a user runs it: outputs, exit codes, and clear
 //! errors without panics or partial output folders on bad input.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_garmentcode"))
-}
-
-/// A fresh, empty scratch folder for one test.
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli").join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn run(args: &[&str], cwd: &Path) -> Output {
-    bin().args(args).current_dir(cwd).output().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-/// Exit code, and no panic message anywhere.
-fn code(o: &Output) -> i32 {
-    let err = stderr(o);
-    assert!(!err.contains("panicked"), "panic: {err}");
-    o.status.code().expect("exited normally")
-}
+mod common;
+use common::{code, run, scratch, stderr, stdout};
 
 #[test]
 fn build_default_writes_every_file_and_is_deterministic() {

@@ -2,34 +2,10 @@
 //! runs them: the files (read back), exit statuses, and clear errors with nothing written on
 //! bad input. Drapes are cut short with `--max-frames` to keep the tests fast, except one.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_garmentcode"))
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("drape_cli").join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn run(args: &[&str], cwd: &Path) -> Output {
-    bin().args(args).current_dir(cwd).output().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-/// Exit code, and no panic message.
-fn code(o: &Output) -> i32 {
-    let err = stderr(o);
-    assert!(!err.contains("panicked"), "panic: {err}");
-    o.status.code().expect("exited normally")
-}
+mod common;
+use common::{code, run, scratch, stderr};
 
 /// The waistband of the drape crate's test data (598 particles in the reference).
 fn waistband() -> String {

@@ -5,7 +5,6 @@
 
 use garmentcode::{Body, Pattern};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 use std::time::{Duration, Instant};
 
 fn data(name: &str) -> PathBuf {
@@ -51,16 +50,8 @@ fn within<T>(limit: Duration, what: &str, f: impl FnOnce() -> T) -> T {
 
 const FAST: Duration = Duration::from_secs(5);
 
-fn cli(args: &[&str], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_garmentcode")).args(args).current_dir(cwd).output().unwrap()
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hardening").join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+mod common;
+use common::{run as cli, scratch};
 
 #[test]
 fn a_body_in_metres_is_refused_at_once_with_a_hint() {

@@ -4,6 +4,7 @@ use std::collections::HashMap;
 use std::path::Path;
 
 use garmentcode::Vec3;
+use garmentcode::mesh::obj::{ObjError, ObjLimits, ObjMesh};
 
 use crate::bvh::{Bvh, Closest, Feature};
 
@@ -275,51 +276,13 @@ impl BodyMesh {
     /// Parses an OBJ text in metres (`v x y z`, `f a b c ...`; polygons become fans), scaled
     /// to cm. `file` names the source in errors.
     pub fn from_obj(text: &str, file: &str) -> Result<BodyMesh, BodyError> {
-        let parse = |line: usize, reason: String| BodyError::Parse { file: file.to_string(), line, reason };
-        let mut vertices = Vec::new();
-        let mut faces = Vec::new();
-        for (n, line) in text.lines().enumerate() {
-            let mut it = line.split_whitespace();
-            match it.next() {
-                Some("v") => {
-                    let mut c = [0.0; 3];
-                    for x in &mut c {
-                        let t = it.next().ok_or_else(|| parse(n + 1, "a vertex needs three coordinates".into()))?;
-                        *x = t.parse::<f64>().map_err(|e| parse(n + 1, format!("vertex coordinate '{t}': {e}")))?;
-                        if !x.is_finite() {
-                            return Err(parse(n + 1, format!("vertex coordinate '{t}' is not finite")));
-                        }
-                    }
-                    if vertices.len() == MAX_VERTICES {
-                        return Err(BodyError::TooLarge { file: file.into(), what: "more vertices".into(), limit: MAX_VERTICES as u64 });
-                    }
-                    vertices.push(Vec3::from_array(c) * 100.0);
-                }
-                Some("f") => {
-                    let mut ids = Vec::new();
-                    for t in it {
-                        let s = t.split('/').next().unwrap_or("");
-                        let i: i64 = s.parse().map_err(|e| parse(n + 1, format!("face index '{t}': {e}")))?;
-                        // OBJ indices are 1-based; negative ones count back from the last vertex.
-                        let i = if i < 0 { vertices.len() as i64 + i } else { i - 1 };
-                        if i < 0 || i >= vertices.len() as i64 {
-                            return Err(parse(n + 1, format!("face index '{t}' names no vertex (there are {} so far)", vertices.len())));
-                        }
-                        ids.push(i as u32);
-                    }
-                    if ids.len() < 3 {
-                        return Err(parse(n + 1, "a face needs at least three corners".into()));
-                    }
-                    for k in 1..ids.len() - 1 {
-                        faces.push([ids[0], ids[k], ids[k + 1]]);
-                    }
-                    if faces.len() > MAX_TRIANGLES {
-                        return Err(BodyError::TooLarge { file: file.into(), what: "more triangles".into(), limit: MAX_TRIANGLES as u64 });
-                    }
-                }
-                _ => {}
-            }
-        }
+        let limits = ObjLimits { max_vertices: MAX_VERTICES, max_triangles: MAX_TRIANGLES };
+        let obj = ObjMesh::parse(text, limits).map_err(|e| match e {
+            ObjError::Line { line, reason } => BodyError::Parse { file: file.to_string(), line, reason },
+            ObjError::TooLarge { what, limit } => BodyError::TooLarge { file: file.to_string(), what: what.into(), limit: limit as u64 },
+        })?;
+        let vertices = obj.vertices.into_iter().map(|v| v * 100.0).collect();
+        let faces = obj.triangles.into_iter().map(|t| t.map(|i| i as u32)).collect();
         BodyMesh::new(file, vertices, faces)
     }
 

@@ -85,9 +85,9 @@ fn the_sim_obj_keeps_the_box_mesh_lines_but_the_vertices() {
     let (obj, sim) = (mesh.obj(), sim_obj(&mesh, &moved));
     let not_v = |s: &str| s.lines().filter(|l| !l.starts_with("v ")).map(str::to_string).collect::<Vec<_>>();
     assert_eq!(not_v(&obj), not_v(&sim));
-    let (vertices, faces) = garmentcode::mesh::write::read_obj(&sim).unwrap();
-    assert_eq!(vertices, moved);
-    assert_eq!(faces, mesh.faces.iter().map(|f| f.vertices).collect::<Vec<_>>());
+    let read = garmentcode::mesh::obj::ObjMesh::parse(&sim, Default::default()).unwrap();
+    assert_eq!(read.vertices, moved);
+    assert_eq!(read.triangles, mesh.faces.iter().map(|f| f.vertices).collect::<Vec<_>>());
 }
 
 #[test]
@@ -134,9 +134,9 @@ fn body_meshes_are_checked() {
     assert!(cm.to_string().contains("cm.obj: body height 17000.000 cm") && cm.to_string().contains("in metres"), "{cm}");
 
     let nan = BodyMesh::from_obj("v 0 nan 0\n", "nan.obj").unwrap_err();
-    assert_eq!(nan.to_string(), "nan.obj:1: vertex coordinate 'nan' is not finite");
+    assert_eq!(nan.to_string(), r#"nan.obj:1: vertex coordinate "nan" is not finite"#);
     let index = BodyMesh::from_obj("v 0 0 0\nv 1 0 0\nf 1 2 3\n", "idx.obj").unwrap_err();
-    assert_eq!(index.to_string(), "idx.obj:3: face index '3' names no vertex (there are 2 so far)");
+    assert_eq!(index.to_string(), r#"idx.obj:3: face index "3" names no vertex (there are 2 so far)"#);
     let missing = BodyMesh::load("no/such/body.obj".as_ref()).unwrap_err();
     assert!(missing.to_string().starts_with("no/such/body.obj: cannot read the body mesh"), "{missing}");
     let unknown = BodyMesh::builtin("mean_alll").unwrap_err();

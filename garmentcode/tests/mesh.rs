@@ -18,7 +18,8 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use garmentcode::Curvature;
-use garmentcode::mesh::write::{read_obj, read_segmentation};
+use garmentcode::mesh::obj::ObjMesh;
+use garmentcode::mesh::write::read_segmentation;
 use garmentcode::mesh::{BoxMesh, DEFAULT_RESOLUTION, MeshError, PanelMesh, SIZE_BOUND, VertexLabel};
 use garmentcode::{Pattern, Vec2, Vec3};
 use serde_json::Value;
@@ -396,9 +397,11 @@ fn written_files_read_back() {
     let side = garmentcode::mesh::write::TEXTURE_SIZE as u32;
     let (width, height) = (u32::from_be_bytes(png[16..20].try_into().unwrap()), u32::from_be_bytes(png[20..24].try_into().unwrap()));
     assert_eq!((width, height), (side, side));
-    let (vertices, faces) = read_obj(&std::fs::read_to_string(dir.join(format!("{name}_boxmesh.obj"))).unwrap()).expect("our OBJ");
+    let read =
+        ObjMesh::parse(&std::fs::read_to_string(dir.join(format!("{name}_boxmesh.obj"))).unwrap(), Default::default()).expect("our OBJ");
+    let vertices = read.vertices;
     assert_eq!(vertices, mesh.vertices, "positions round-trip exactly");
-    assert_eq!(faces, mesh.faces.iter().map(|f| f.vertices).collect::<Vec<_>>());
+    assert_eq!(read.triangles, mesh.faces.iter().map(|f| f.vertices).collect::<Vec<_>>());
     let seg = read_segmentation(&std::fs::read_to_string(dir.join(format!("{name}_sim_segmentation.txt"))).unwrap());
     assert_eq!(seg.len(), vertices.len());
     for (v, labels) in seg.iter().enumerate() {
@@ -410,8 +413,9 @@ fn written_files_read_back() {
             assert!(mesh.panels.iter().any(|p| p.name == labels[0]));
         }
     }
-    let welded = read_obj(&std::fs::read_to_string(dir.join(format!("{name}_sim_mesh.obj"))).unwrap()).expect("welded OBJ");
-    assert!(welded.0.iter().zip(&mesh.vertices).all(|(m, c)| (*m * 100.0 - *c).length() < 1e-9));
+    let welded = ObjMesh::parse(&std::fs::read_to_string(dir.join(format!("{name}_sim_mesh.obj"))).unwrap(), Default::default())
+        .expect("welded OBJ");
+    assert!(welded.vertices.iter().zip(&mesh.vertices).all(|(m, c)| (*m * 100.0 - *c).length() < 1e-9));
     std::fs::remove_dir_all(&dir).ok();
 }
 

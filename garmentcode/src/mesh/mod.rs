@@ -53,6 +53,7 @@ mod curve;
 mod triangulate;
 
 use triangulate::HashMap;
+pub mod obj;
 pub mod write;
 
 use thiserror::Error;

@@ -491,36 +491,6 @@ fn yaml_key(s: &str) -> String {
     if plain { s.to_string() } else { format!("'{}'", s.replace('\'', "''")) }
 }
 
-/// Vertices (`v x y z`) and triangles (`f a/.. b/.. c/..`, 0-based) of an OBJ text.
-pub fn read_obj(text: &str) -> Result<(Vec<Vec3>, Vec<[usize; 3]>), String> {
-    let mut vertices = Vec::new();
-    let mut faces = Vec::new();
-    for (n, line) in text.lines().enumerate() {
-        let mut it = line.split_whitespace();
-        match it.next() {
-            Some("v") => {
-                let c: Vec<f64> =
-                    it.take(3).map(|x| x.parse::<f64>().map_err(|e| format!("line {}: {e}", n + 1))).collect::<Result<_, _>>()?;
-                if c.len() != 3 {
-                    return Err(format!("line {}: a vertex needs three coordinates", n + 1));
-                }
-                vertices.push(Vec3::new(c[0], c[1], c[2]));
-            }
-            Some("f") => {
-                let ids: Vec<usize> = it
-                    .map(|t| t.split('/').next().unwrap_or("").parse::<usize>().map_err(|e| format!("line {}: {e}", n + 1)))
-                    .collect::<Result<_, _>>()?;
-                if ids.len() != 3 || ids.iter().any(|&i| i == 0 || i > vertices.len()) {
-                    return Err(format!("line {}: not a triangle of existing vertices", n + 1));
-                }
-                faces.push([ids[0] - 1, ids[1] - 1, ids[2] - 1]);
-            }
-            _ => {}
-        }
-    }
-    Ok((vertices, faces))
-}
-
 /// The labels of a segmentation file, one per vertex (each a list of comma-separated entries).
 pub fn read_segmentation(text: &str) -> Vec<Vec<String>> {
     text.lines().map(|l| l.split(',').map(str::to_string).collect()).collect()
