@@ -1,0 +1,192 @@
+//! The pattern format extension (issue 25; `docs/pattern-extension.md`): holes, inner
+//! lines, layers and stitches on them, read and written in `specification.json`,
+//! checked, drawn, printed and meshed. `tests/data/extension/specification.json` is a
+//! small pattern using every construct: a diamond dart and a round keyhole in
+//! `front`, a pocket's placement line on `front` with `pocket` stitched onto it, a
+//! facing layer, a sleeve with a fold line and a skirt with a pleat's lines.
+
+use garmentcode::{EXTENSION_VERSION, EdgePlace, HoleKind, Layer, LineKind, Pattern};
+use std::path::Path;
+
+fn fixture_text() -> String {
+    std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/extension/specification.json")).expect("fixture")
+}
+
+fn fixture() -> Pattern {
+    Pattern::from_json(&fixture_text()).expect("the fixture reads")
+}
+
+/// The fixture with one JSON edit applied, read back (the error, if any).
+fn edited(edit: impl FnOnce(&mut serde_json::Value)) -> Result<Pattern, String> {
+    let mut v: serde_json::Value = serde_json::from_str(&fixture_text()).expect("json");
+    edit(&mut v);
+    Pattern::from_json(&v.to_string()).map_err(|e| e.to_string())
+}
+
+#[test]
+fn every_construct_reads() {
+    let p = fixture();
+    let front = p.panel("front").expect("front");
+    assert_eq!(front.holes.len(), 2);
+    assert_eq!((front.holes[0].name.as_str(), front.holes[0].kind), ("waist_dart", HoleKind::Dart));
+    assert_eq!(front.holes[0].vertices[2], [12.0, 44.0]);
+    assert_eq!(front.holes[1].kind, HoleKind::Cut);
+    assert!(front.holes[1].edges[1].curvature.is_some());
+    assert_eq!((front.lines[0].kind, front.lines[0].edges.len()), (LineKind::Placement, 3));
+    assert_eq!(front.layer, Layer::Outer);
+    assert_eq!(p.panel("front_facing").expect("facing").layer, Layer::Facing);
+    assert_eq!(p.panel("sleeve").expect("sleeve").lines[0].kind, LineKind::Fold { angle: 180.0 });
+    let skirt = p.panel("skirt").expect("skirt");
+    assert_eq!(skirt.lines.iter().map(|l| l.kind).collect::<Vec<_>>(), [LineKind::PleatFold, LineKind::PleatPlacement]);
+    assert_eq!(p.inner_stitches.len(), 5);
+    assert_eq!(p.inner_stitches[0].sides[1].place, EdgePlace::Hole(0));
+    assert_eq!((p.inner_stitches[2].sides[0].place, p.inner_stitches[2].sides[1].place), (EdgePlace::Outline, EdgePlace::Line(0)));
+    assert!(p.inner_stitches[2].right_wrong && !p.inner_stitches[0].right_wrong);
+    assert!(p.uses_extension());
+    assert!(!p.properties.extra.iter().any(|(k, _)| k == "extension_version"), "the version is not kept as an unknown property");
+}
+
+#[test]
+fn round_trip_is_byte_identical() {
+    let text = fixture_text();
+    assert_eq!(fixture().to_json().expect("writes"), text);
+}
+
+#[test]
+fn a_pattern_without_the_extension_writes_none_of_it() {
+    let mut p = fixture();
+    for panel in &mut p.panels {
+        panel.holes.clear();
+        panel.lines.clear();
+        panel.layer = Layer::Outer;
+    }
+    p.inner_stitches.clear();
+    assert!(!p.uses_extension());
+    let json = p.to_json().expect("writes");
+    for key in ["holes", "lines", "layer", "inner_stitches", "extension_version"] {
+        assert!(!json.contains(&format!("\"{key}\"")), "{key} written");
+    }
+    // A layer alone is the extension.
+    p.panels[0].layer = Layer::Lining;
+    let json = p.to_json().expect("writes");
+    assert!(json.contains("\"layer\": \"lining\"") && json.contains(&format!("\"extension_version\": {EXTENSION_VERSION}")));
+}
+
+#[test]
+fn other_units_scale_the_inner_geometry() {
+    let p = edited(|v| {
+        v["properties"]["units_in_meter"] = 1000.into();
+    })
+    .expect("reads");
+    let front = p.panel("front").expect("front");
+    assert_eq!(front.holes[0].vertices[2], [12.0 * 0.1, 44.0 * 0.1]);
+    assert_eq!(front.lines[0].vertices[1], [24.0 * 0.1, 10.0 * 0.1]);
+    assert!(
+        matches!(front.holes[1].edges[0].curvature, Some(garmentcode::Curvature::Circle { radius, .. }) if (radius - 0.2).abs() < 1e-12)
+    );
+}
+
+#[test]
+fn reading_errors_name_the_json_path() {
+    let cases: Vec<(Box<dyn FnOnce(&mut serde_json::Value)>, &str)> = vec![
+        (
+            Box::new(|v| v["pattern"]["panels"]["front"]["holes"][0]["kind"] = "slit".into()),
+            "pattern.panels.front.holes[0].kind: expected \"cut\" or \"dart\"",
+        ),
+        (
+            Box::new(|v| v["pattern"]["panels"]["sleeve"]["lines"][0]["kind"] = "crease".into()),
+            "pattern.panels.sleeve.lines[0].kind: expected \"fold\"",
+        ),
+        (
+            Box::new(|v| drop(v["pattern"]["panels"]["sleeve"]["lines"][0].as_object_mut().unwrap().remove("angle"))),
+            "pattern.panels.sleeve.lines[0].angle: missing",
+        ),
+        (
+            Box::new(|v| v["pattern"]["panels"]["front"]["holes"][0]["vertices"][1] = serde_json::json!([1.0])),
+            "pattern.panels.front.holes[0].vertices[1]: expected 2 numbers",
+        ),
+        (
+            Box::new(|v| v["pattern"]["panels"]["front"]["lines"][0]["edges"][0]["endpoints"] = serde_json::json!([0])),
+            "pattern.panels.front.lines[0].edges[0].endpoints: expected 2 vertex indices",
+        ),
+        (
+            Box::new(|v| v["pattern"]["panels"]["front"]["layer"] = "inner".into()),
+            "pattern.panels.front.layer: expected \"outer\", \"facing\" or \"lining\"",
+        ),
+        (
+            Box::new(|v| v["pattern"]["panels"]["front"]["holes"][0]["name"] = 3.into()),
+            "pattern.panels.front.holes[0].name: expected a string",
+        ),
+        (
+            Box::new(|v| v["pattern"]["inner_stitches"][0][1]["line"] = 0.into()),
+            "pattern.inner_stitches[0][1]: a side is on a \"hole\" or on a \"line\"",
+        ),
+        (
+            Box::new(|v| v["pattern"]["inner_stitches"][1][0]["hole"] = (-1).into()),
+            "pattern.inner_stitches[1][0].hole: expected a non-negative integer",
+        ),
+        (
+            Box::new(|v| v["pattern"]["stitches"][0][0]["hole"] = 0.into()),
+            "pattern.stitches[0][0]: a side on a hole or an inner line belongs in pattern.inner_stitches",
+        ),
+        (
+            Box::new(|v| v["properties"]["extension_version"] = 2.into()),
+            "properties.extension_version: expected a format extension version from 1 to 1",
+        ),
+        (
+            Box::new(|v| v["pattern"]["panels"]["front"]["holes"][0]["vertices"][0] = serde_json::json!([1e6, 0.0])),
+            "pattern.panels.front: coordinate 1e6 cm is beyond",
+        ),
+        (
+            Box::new(|v| v["pattern"]["panels"]["front"]["holes"][1]["edges"][1]["curvature"]["params"] = serde_json::json!([1e7, 1, 0])),
+            "pattern.panels.front.holes[1].edges[1].curvature: a control point",
+        ),
+    ];
+    for (edit, expected) in cases {
+        let err = edited(edit).expect_err(expected);
+        assert!(err.contains(expected), "{err:?} does not say {expected:?}");
+    }
+}
+
+#[test]
+fn counts_are_bounded() {
+    let err = edited(|v| {
+        let hole = v["pattern"]["panels"]["front"]["holes"][0].clone();
+        v["pattern"]["panels"]["front"]["holes"] = serde_json::Value::Array(vec![hole; 101]);
+    })
+    .expect_err("101 holes");
+    assert!(err.contains("pattern.panels.front.holes: 101 items, at most 100"), "{err}");
+    let err = edited(|v| {
+        let s = v["pattern"]["inner_stitches"][0].clone();
+        v["pattern"]["inner_stitches"] = serde_json::Value::Array(vec![s; 1001]);
+    })
+    .expect_err("1001 stitches");
+    assert!(err.contains("pattern.inner_stitches: 1001 stitches, at most 1000"), "{err}");
+    // Hole and line edges count with the outline's.
+    let err = edited(|v| {
+        let line = &mut v["pattern"]["panels"]["sleeve"]["lines"][0];
+        line["vertices"] = serde_json::Value::Array((0..500).map(|i| serde_json::json!([i as f64 * 0.1, 15.0])).collect());
+        line["edges"] = serde_json::Value::Array((0..499).map(|i| serde_json::json!({"endpoints": [i, i + 1]})).collect());
+    })
+    .expect_err("503 edges");
+    assert!(err.contains("pattern.panels.sleeve: 503 edges, at most 500"), "{err}");
+}
+
+#[test]
+fn non_finite_covers_the_inner_geometry() {
+    let mut p = fixture();
+    assert_eq!(p.non_finite(), None);
+    p.panels[0].holes[1].vertices[1][0] = f64::NAN;
+    assert_eq!(p.non_finite().as_deref(), Some("panel 'front' hole 1 vertex 1"));
+    let mut p = fixture();
+    p.panels[0].lines[0].vertices[0][1] = f64::INFINITY;
+    assert_eq!(p.non_finite().as_deref(), Some("panel 'front' line 0 vertex 0"));
+    let mut p = fixture();
+    let sleeve = p.panels.iter_mut().find(|s| s.name == "sleeve").expect("sleeve");
+    sleeve.lines[0].kind = LineKind::Fold { angle: f64::NAN };
+    assert_eq!(p.non_finite().as_deref(), Some("panel 'sleeve' line 0 fold angle"));
+    assert!(p.to_json().is_err(), "a NaN is not written");
+    let mut p = fixture();
+    p.panels[0].holes[1].edges[0].curvature = Some(garmentcode::Curvature::Circle { radius: f64::NAN, large_arc: false, right: false });
+    assert_eq!(p.non_finite().as_deref(), Some("panel 'front' holes[1].edges[0] curvature"));
+}
