@@ -8,6 +8,11 @@
 use garmentcode::{EXTENSION_VERSION, EdgePlace, HoleKind, Layer, LineKind, Pattern};
 use std::path::Path;
 
+/// An edit of the fixture's JSON.
+type JsonEdit = Box<dyn FnOnce(&mut serde_json::Value)>;
+/// An edit of the fixture's pattern.
+type PatternEdit = Box<dyn FnOnce(&mut Pattern)>;
+
 fn fixture_text() -> String {
     std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/extension/specification.json")).expect("fixture")
 }
@@ -88,7 +93,7 @@ fn other_units_scale_the_inner_geometry() {
 
 #[test]
 fn reading_errors_name_the_json_path() {
-    let cases: Vec<(Box<dyn FnOnce(&mut serde_json::Value)>, &str)> = vec![
+    let cases: Vec<(JsonEdit, &str)> = vec![
         (
             Box::new(|v| v["pattern"]["panels"]["front"]["holes"][0]["kind"] = "slit".into()),
             "pattern.panels.front.holes[0].kind: expected \"cut\" or \"dart\"",
@@ -189,4 +194,162 @@ fn non_finite_covers_the_inner_geometry() {
     let mut p = fixture();
     p.panels[0].holes[1].edges[0].curvature = Some(garmentcode::Curvature::Circle { radius: f64::NAN, large_arc: false, right: false });
     assert_eq!(p.non_finite().as_deref(), Some("panel 'front' holes[1].edges[0] curvature"));
+}
+
+// ---------------------------------------------------------------- check
+
+/// The structural errors of the fixture after `edit`, as (kind, panel, message).
+fn errors_after(edit: impl FnOnce(&mut Pattern)) -> Vec<(garmentcode::ProblemKind, String, String)> {
+    let mut p = fixture();
+    edit(&mut p);
+    garmentcode::structural_errors(&p).into_iter().map(|e| (e.kind, e.panel.unwrap_or_default(), e.message)).collect()
+}
+
+fn panel_mut<'a>(p: &'a mut Pattern, name: &str) -> &'a mut garmentcode::PanelSpec {
+    p.panels.iter_mut().find(|x| x.name == name).expect("panel")
+}
+
+#[test]
+fn the_fixture_checks_clean() {
+    let p = fixture();
+    assert_eq!(garmentcode::validate(&p), []);
+}
+
+#[test]
+fn check_reports_each_extension_error() {
+    use garmentcode::ProblemKind as K;
+    let cases: Vec<(PatternEdit, K, &str, &str)> = vec![
+        (
+            Box::new(|p| panel_mut(p, "front").holes[1].vertices = vec![[58.0, 50.0], [62.0, 50.0]]),
+            K::HoleOutsidePanel,
+            "front",
+            "hole 'keyhole' lies outside the outline",
+        ),
+        (
+            Box::new(|p| panel_mut(p, "front").holes[0].vertices[1] = [45.0, 32.0]),
+            K::HoleCrossing,
+            "front",
+            "hole 'waist_dart' crosses or touches the outline",
+        ),
+        (
+            Box::new(|p| panel_mut(p, "front").holes[1].vertices = vec![[11.0, 30.0], [15.0, 30.0]]),
+            K::HoleCrossing,
+            "front",
+            "hole 'keyhole' crosses, touches or holds hole 'waist_dart'",
+        ),
+        (
+            Box::new(|p| panel_mut(p, "front").holes[1].vertices = vec![[11.5, 32.0], [12.5, 32.0]]),
+            K::HoleCrossing,
+            "front",
+            "hole 'keyhole' crosses, touches or holds hole 'waist_dart'",
+        ),
+        (Box::new(|p| panel_mut(p, "front").holes[0].vertices.swap(1, 2)), K::HoleCrossing, "front", "hole 'waist_dart' crosses itself"),
+        (
+            Box::new(|p| panel_mut(p, "front").lines[0].vertices[2] = [50.0, 10.0]),
+            K::LineOutsidePanel,
+            "front",
+            "line 'pocket' leaves the panel",
+        ),
+        (
+            Box::new(|p| panel_mut(p, "sleeve").lines[0].vertices[1] = [40.0, 15.0]),
+            K::FoldNotAcross,
+            "sleeve",
+            "fold line 'underarm' does not cross the panel",
+        ),
+        (
+            Box::new(|p| panel_mut(p, "sleeve").lines[0].kind = LineKind::Fold { angle: 200.0 }),
+            K::FoldAngleOutOfRange,
+            "sleeve",
+            "fold line 'underarm': angle 200° is outside 0 to 180°",
+        ),
+        (
+            Box::new(|p| panel_mut(p, "skirt").lines[1].name = "pleat_0_fold".into()),
+            K::DuplicateName,
+            "skirt",
+            "two holes or lines are named 'pleat_0_fold'",
+        ),
+        (
+            Box::new(|p| panel_mut(p, "front").holes[0].edges[2].endpoints[1] = 7),
+            K::VertexOutOfRange,
+            "front",
+            "hole 'waist_dart' edge 2: vertex 7 does not exist (it has 4)",
+        ),
+        (
+            Box::new(|p| panel_mut(p, "front").holes[0].edges[3].endpoints[1] = 1),
+            K::OpenLoop,
+            "front",
+            "hole 'waist_dart' edge 3 ends at vertex 1 but edge 0 starts at vertex 0",
+        ),
+        (
+            Box::new(|p| panel_mut(p, "front").lines[0].edges[1].endpoints = [2, 3]),
+            K::OpenLoop,
+            "front",
+            "line 'pocket' edge 0 ends at vertex 1 but edge 1 starts at vertex 2",
+        ),
+        (Box::new(|p| panel_mut(p, "sleeve").lines[0].edges.clear()), K::EmptyPanel, "sleeve", "line 'underarm' has 0 edges (at least 1)"),
+        (
+            Box::new(|p| p.inner_stitches[0].sides[0].panel = "back".into()),
+            K::UnknownPanel,
+            "back",
+            "inner stitch 0: no panel with this name",
+        ),
+        (
+            Box::new(|p| p.inner_stitches[1].sides[1].place = EdgePlace::Hole(5)),
+            K::UnknownHoleOrLine,
+            "front",
+            "inner stitch 1: hole 5 does not exist (the panel has 2 holes and 1 lines)",
+        ),
+        (
+            Box::new(|p| p.inner_stitches[2].sides[1].edge = 9),
+            K::EdgeOutOfRange,
+            "front",
+            "inner stitch 2: edge 9 of line 0 does not exist (it has 3 edges)",
+        ),
+        (
+            Box::new(|p| p.inner_stitches[1].sides[1].edge = 0),
+            K::EdgeStitchedTwice,
+            "front",
+            "inner stitch 1: edge 0 of hole 0 is already used by inner stitch 0",
+        ),
+        (
+            Box::new(|p| {
+                p.inner_stitches[2].sides[0] = garmentcode::InnerSide { panel: "front".into(), place: EdgePlace::Outline, edge: 2 }
+            }),
+            K::EdgeStitchedTwice,
+            "front",
+            "inner stitch 2: edge 2 of the outline is already used by stitch 0",
+        ),
+    ];
+    for (edit, kind, panel, message) in cases {
+        let errors = errors_after(edit);
+        assert!(
+            errors.iter().any(|(k, p, m)| *k == kind && p == panel && m.starts_with(message)),
+            "expected {kind:?} on {panel}: {message:?}; got {errors:?}"
+        );
+        assert!(errors.iter().all(|(k, ..)| *k == kind), "only {kind:?} expected: {errors:?}");
+    }
+}
+
+#[test]
+fn placement_lines_take_more_than_one_stitch_per_edge() {
+    // A pocket and its flap both sewn along the placement line's top.
+    let errors = errors_after(|p| {
+        let mut s = p.inner_stitches[3].clone();
+        s.sides[0].edge = 3;
+        p.inner_stitches.push(s);
+    });
+    assert_eq!(errors, []);
+}
+
+#[test]
+fn a_fold_line_across_a_curved_outline_is_accepted() {
+    // The sleeve's far side bulges (a quadratic edge); the fold line ends on the curve.
+    let errors = errors_after(|p| {
+        let sleeve = panel_mut(p, "sleeve");
+        sleeve.edges[1].curvature = Some(garmentcode::Curvature::Quadratic([0.5, 0.2]));
+        // The quadratic's point at its middle: x = 50 + 0.2 * 30 * ... sampled from the edge itself.
+        let mid = sleeve.edge_geom(1).point(0.5);
+        sleeve.lines[0].vertices[1] = [mid.x, mid.y];
+    });
+    assert_eq!(errors, []);
 }
