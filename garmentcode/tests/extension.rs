@@ -353,3 +353,66 @@ fn a_fold_line_across_a_curved_outline_is_accepted() {
     });
     assert_eq!(errors, []);
 }
+
+// ---------------------------------------------------------------- drawings
+
+/// The SVG drawing of the fixture: holes cut out with the even-odd rule, the dart a
+/// dashed loop, the fold line dash-dot with its label, placement and pleat lines
+/// dashed; a snapshot of the whole document.
+#[test]
+fn drawing_shows_every_construct() {
+    use garmentcode::draw::{DrawOptions, to_svg};
+    let svg = to_svg(&fixture(), &DrawOptions::default()).expect("draws");
+    let front = svg.lines().find(|l| l.starts_with("<g id=\"front\">")).expect("front group");
+    assert!(front.contains("fill-rule=\"evenodd\""), "{front}");
+    // The keyhole is a second subpath of the outline: two arcs, closed.
+    assert_eq!(front.matches(" Z").count(), 2, "{front}");
+    assert_eq!(front.matches(" A 2,2 ").count(), 2, "{front}");
+    let line = |class: &str| svg.lines().find(|l| l.starts_with(&format!("<path class=\"{class}\""))).unwrap_or_else(|| panic!("{class}"));
+    assert!(
+        line("dart").contains("stroke-dasharray=\"0.8 0.4\"")
+            && line("dart").ends_with("Z\" fill=\"none\" stroke=\"rgb(51,51,51)\" stroke-width=\"0.15\" stroke-dasharray=\"0.8 0.4\"/>")
+    );
+    assert!(line("fold").contains("stroke-dasharray=\"1.6 0.4 0.3 0.4\""));
+    assert!(line("placement").contains("data-name=\"pocket\"") && line("placement").contains("stroke-dasharray=\"0.6 0.4\""));
+    assert!(line("pleat-fold").contains("stroke-dasharray=\"1.6 0.6\""));
+    assert!(line("pleat-placement").contains("stroke-dasharray=\"0.2 0.4\""));
+    assert!(svg.contains("<g class=\"mark-labels\" font-family=\"sans-serif\">\n<text") && svg.contains(">fold</text>"));
+    // Panels without the extension are drawn as before.
+    let pocket = svg.lines().find(|l| l.starts_with("<g id=\"pocket\">")).expect("pocket group");
+    assert!(pocket.ends_with("stroke-width=\"0.2\"/></g>") && !pocket.contains("evenodd"), "{pocket}");
+    insta::assert_snapshot!("extension_svg", svg);
+}
+
+/// The PNG: the keyhole is an opening (transparent), the dart's inside is fabric.
+#[cfg(feature = "png")]
+#[test]
+fn png_leaves_cut_holes_open() {
+    use garmentcode::draw::{DrawOptions, to_png, to_svg};
+    let opts = DrawOptions { px_per_cm: 10.0, ..Default::default() };
+    let p = fixture();
+    let svg = to_svg(&p, &opts).expect("svg");
+    let vb: Vec<f64> = svg
+        .split("viewBox=\"")
+        .nth(1)
+        .expect("viewBox")
+        .split('"')
+        .next()
+        .expect("value")
+        .split(' ')
+        .map(|x| x.parse().expect("number"))
+        .collect();
+    let png = to_png(&p, &opts).expect("png");
+    let mut reader = png::Decoder::new(std::io::Cursor::new(png)).read_info().expect("png");
+    let mut buf = vec![0; reader.output_buffer_size().expect("size")];
+    let info = reader.next_frame(&mut buf).expect("frame");
+    // Sheet point of front's local (x, y): the panel is unrotated at (-20, 90).
+    let at = |x: f64, y: f64| {
+        let (i, j) = (((x - 20.0 - vb[0]) * 10.0) as usize, ((-(y + 90.0) - vb[1]) * 10.0) as usize);
+        let k = 4 * (j * info.width as usize + i);
+        [buf[k], buf[k + 1], buf[k + 2], buf[k + 3]]
+    };
+    assert_eq!(at(30.0, 50.0), [0, 0, 0, 0], "the keyhole is open");
+    assert_eq!(at(12.0, 40.0), [227, 175, 186, 255], "inside the dart is fabric");
+    assert_eq!(at(30.0, 45.0), [227, 175, 186, 255], "around the keyhole is fabric");
+}
