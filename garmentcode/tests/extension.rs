@@ -416,3 +416,115 @@ fn png_leaves_cut_holes_open() {
     assert_eq!(at(12.0, 40.0), [227, 175, 186, 255], "inside the dart is fabric");
     assert_eq!(at(30.0, 45.0), [227, 175, 186, 255], "around the keyhole is fabric");
 }
+
+// ---------------------------------------------------------------- print and DXF-AAMA
+
+/// The fixture's DXF-AAMA file, and its blocks read back by our reader.
+fn fixture_dxf() -> (String, garmentcode::fabricate::DxfDrawing) {
+    use garmentcode::fabricate::{PrintOptions, files, read_dxf};
+    let out = files(&fixture(), &PrintOptions::default()).expect("prints");
+    let text = String::from_utf8(out.into_iter().find(|(n, _)| n == "pattern.dxf").expect("dxf").1).expect("ascii");
+    let d = read_dxf(&text).expect("reads back");
+    (text, d)
+}
+
+fn on_layer<'a>(
+    d: &'a garmentcode::fabricate::DxfDrawing,
+    block: &str,
+    kind: &str,
+    layer: &str,
+) -> Vec<&'a garmentcode::fabricate::DxfEntity> {
+    let b = d.blocks.iter().find(|b| b.name == block).unwrap_or_else(|| panic!("block {block}"));
+    b.entities.iter().filter(|e| e.kind == kind && e.layer == layer).collect()
+}
+
+#[test]
+fn dxf_carries_every_construct_on_its_aama_layer() {
+    let (_, d) = fixture_dxf();
+    assert_eq!(d.layers, ["0", "1", "4", "6", "7", "8", "11", "13", "14"]);
+    // Layer 11: the keyhole, a closed circle of radius 2 cm (20 mm).
+    let cutouts = on_layer(&d, "front", "POLYLINE", "11");
+    assert_eq!(cutouts.len(), 1);
+    assert!(cutouts[0].closed);
+    let pts = &cutouts[0].points;
+    let centre = pts.iter().copied().sum::<garmentcode::Vec2>() / pts.len() as f64;
+    assert!(pts.iter().all(|q| ((*q - centre).length() - 20.0).abs() < 0.01), "{pts:?}");
+    // Layer 13: drill holes at the dart's four points and the pocket's four corners (a 12 × 14 cm U).
+    let drills: Vec<garmentcode::Vec2> = on_layer(&d, "front", "POINT", "13").iter().map(|e| e.points[0]).collect();
+    assert_eq!(drills.len(), 8);
+    let (dart, pocket) = drills.split_at(4);
+    let size = |q: &[garmentcode::Vec2]| {
+        let (lo, hi) = q.iter().fold((q[0], q[0]), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+        hi - lo
+    };
+    let s = size(dart);
+    assert!(
+        (size(pocket) - garmentcode::Vec2::new(120.0, 140.0)).length() < 1e-6
+            || (size(pocket) - garmentcode::Vec2::new(140.0, 120.0)).length() < 1e-6
+    );
+    // The dart's points drilled 1 cm inside its tips (24 cm apart) and a third of the way in at its sides (3 cm apart).
+    assert!((s.max_element() - 220.0).abs() < 1e-6 && (s.min_element() - 20.0).abs() < 1e-6, "{s:?}");
+    // Layer 8: the dart (closed loop) and the pocket's placement line; layer 6: the sleeve's fold.
+    assert_eq!(on_layer(&d, "front", "POLYLINE", "8").len(), 2);
+    let mirror = on_layer(&d, "sleeve", "POLYLINE", "6");
+    assert_eq!(mirror.len(), 1);
+    assert!(((mirror[0].points[0] - mirror[0].points[1]).length() - 500.0).abs() < 1e-6, "the 50 cm fold line");
+    // Layer 4: a notch where each pleat line meets the waist (the skirt has no seams).
+    assert_eq!(on_layer(&d, "skirt", "LINE", "4").len(), 2);
+    assert_eq!(on_layer(&d, "skirt", "POLYLINE", "8").len(), 2);
+    // Nothing of it on the panels without the extension.
+    assert!(on_layer(&d, "pocket", "POINT", "13").is_empty() && on_layer(&d, "pocket", "POLYLINE", "8").is_empty());
+}
+
+#[test]
+fn dxf_without_the_extension_keeps_its_layers() {
+    use garmentcode::fabricate::{PrintOptions, files, read_dxf};
+    let mut p = fixture();
+    for panel in &mut p.panels {
+        panel.holes.clear();
+        panel.lines.clear();
+    }
+    p.inner_stitches.clear();
+    let out = files(&p, &PrintOptions::default()).expect("prints");
+    let d = read_dxf(std::str::from_utf8(&out[3].1).expect("ascii")).expect("reads");
+    assert_eq!(d.layers, ["0", "1", "4", "6", "7", "8", "14"]);
+}
+
+#[test]
+fn dxf_with_the_extension_reads_in_ezdxf() {
+    let (text, _) = fixture_dxf();
+    let file = std::env::temp_dir().join(format!("garmentcode-extension-{}.dxf", std::process::id()));
+    std::fs::write(&file, &text).expect("write");
+    let script = r#"
+import sys, json
+import ezdxf
+doc = ezdxf.readfile(sys.argv[1])
+front = doc.blocks.get("front")
+count = {}
+for e in front:
+    key = e.dxftype() + ":" + e.dxf.layer
+    count[key] = count.get(key, 0) + 1
+print(json.dumps({"errors": len(doc.audit().errors), "front": count, "layers": sorted(l.dxf.name for l in doc.layers)}))
+"#;
+    let python = std::env::var("GARMENTCODE_EZDXF_PYTHON").unwrap_or_else(|_| "python3".into());
+    let run = std::process::Command::new(&python).arg("-c").arg(script).arg(&file).output();
+    let _ = std::fs::remove_file(&file);
+    let out = match run {
+        Ok(o) if o.status.success() => o.stdout,
+        Ok(o) if String::from_utf8_lossy(&o.stderr).contains("No module named 'ezdxf'") => {
+            eprintln!("SKIPPED dxf_with_the_extension_reads_in_ezdxf: Python's ezdxf is not installed");
+            return;
+        }
+        Ok(o) => panic!("ezdxf failed: {}", String::from_utf8_lossy(&o.stderr)),
+        Err(e) => {
+            eprintln!("SKIPPED dxf_with_the_extension_reads_in_ezdxf: {python} cannot run ({e})");
+            return;
+        }
+    };
+    let v: serde_json::Value = serde_json::from_slice(&out).expect("json");
+    assert_eq!(v["errors"], 0, "{v}");
+    assert_eq!(v["front"]["POINT:13"], 8, "{v}");
+    assert_eq!(v["front"]["POLYLINE:11"], 1, "{v}");
+    assert_eq!(v["front"]["POLYLINE:8"], 2, "{v}");
+    assert!(v["layers"].as_array().expect("layers").iter().any(|l| l == "11"), "{v}");
+}
