@@ -528,3 +528,148 @@ print(json.dumps({"errors": len(doc.audit().errors), "front": count, "layers": s
     assert_eq!(v["front"]["POLYLINE:8"], 2, "{v}");
     assert!(v["layers"].as_array().expect("layers").iter().any(|l| l == "11"), "{v}");
 }
+
+// ---------------------------------------------------------------- box mesh
+
+fn fixture_mesh(edit: impl FnOnce(&mut Pattern)) -> garmentcode::mesh::BoxMesh {
+    let mut p = fixture();
+    p.name = "extension".into();
+    edit(&mut p);
+    garmentcode::mesh::BoxMesh::new(&p, 1.0).expect("meshes")
+}
+
+fn panel_index(m: &garmentcode::mesh::BoxMesh, name: &str) -> usize {
+    m.panels.iter().position(|p| p.name == name).expect("panel")
+}
+
+fn face_area(panel: &garmentcode::mesh::PanelMesh) -> f64 {
+    panel
+        .faces
+        .iter()
+        .map(|f| (panel.points[f[1]] - panel.points[f[0]]).perp_dot(panel.points[f[2]] - panel.points[f[0]]).abs() / 2.0)
+        .sum()
+}
+
+/// Whether the panel's faces have an edge between local vertices `a` and `b`.
+fn has_edge(panel: &garmentcode::mesh::PanelMesh, a: usize, b: usize) -> bool {
+    panel.faces.iter().any(|f| (0..3).any(|k| (f[k] == a && f[(k + 1) % 3] == b) || (f[k] == b && f[(k + 1) % 3] == a)))
+}
+
+#[test]
+fn mesh_leaves_holes_open() {
+    let m = fixture_mesh(|_| {});
+    let front = &m.panels[panel_index(&m, "front")];
+    // 40 × 60 less the diamond dart (3 × 24 / 2) and the keyhole: a circle of radius 2
+    // sampled at 14 points (a polygon inside the circle, 4π − 1.7% of it).
+    let area = face_area(front);
+    let keyhole = 14.0 / 2.0 * 4.0 * (std::f64::consts::TAU / 14.0).sin();
+    let expected = 2400.0 - 36.0 - keyhole;
+    assert!((area - expected).abs() < 1e-6, "{area} vs {expected}");
+    for f in &front.faces {
+        let c = (front.points[f[0]] + front.points[f[1]] + front.points[f[2]]) / 3.0;
+        assert!((c - garmentcode::Vec2::new(30.0, 50.0)).length() > 1.9, "a face in the keyhole at {c:?}");
+        let in_dart = (c.x - 12.0).abs() / 1.5 + (c.y - 32.0).abs() / 12.0 < 0.99;
+        assert!(!in_dart, "a face in the dart at {c:?}");
+    }
+}
+
+#[test]
+fn mesh_keeps_inner_lines_as_rows_of_edges() {
+    let m = fixture_mesh(|_| {});
+    for (panel, first) in [("front", 4 + 4 + 2), ("sleeve", 4), ("skirt", 4)] {
+        let pm = &m.panels[panel_index(&m, panel)];
+        let lines = &pm.edges[first..];
+        assert!(!lines.is_empty());
+        for e in lines {
+            for w in e.local.windows(2) {
+                assert!(has_edge(pm, w[0], w[1]), "{panel}: no mesh edge {w:?}");
+            }
+        }
+    }
+    // The fold line crosses the sleeve: its ends are outline vertices, 51 vertices 1 cm apart.
+    let sleeve = &m.panels[panel_index(&m, "sleeve")];
+    let fold = &sleeve.edges[4].local;
+    assert_eq!(fold.len(), 51);
+    let outline: Vec<usize> = sleeve.edges[..4].iter().flat_map(|e| e.local.clone()).collect();
+    assert!(outline.contains(&fold[0]) && outline.contains(&fold[50]));
+    // Both sides of the line are meshed (it bounds nothing).
+    let area = face_area(sleeve);
+    assert!((area - 1500.0).abs() < 1e-6, "{area}");
+}
+
+#[test]
+fn mesh_turns_the_part_right_of_a_fold() {
+    // The sleeve's underarm fold runs along +x at y = 15: the part at y < 15 turns.
+    let local = |m: &garmentcode::mesh::BoxMesh, v: garmentcode::Vec3| {
+        let s = &m.panels[panel_index(m, "sleeve")];
+        s.rotation.transpose() * (v - s.translation)
+    };
+    let flat = fixture_mesh(|p| panel_mut(p, "sleeve").lines[0].kind = LineKind::Fold { angle: 0.0 });
+    let folded = fixture_mesh(|_| {});
+    let square = fixture_mesh(|p| panel_mut(p, "sleeve").lines[0].kind = LineKind::Fold { angle: 90.0 });
+    let si = panel_index(&folded, "sleeve");
+    let s = &folded.panels[si];
+    let mut turned = 0;
+    for l in 0..s.points.len() {
+        let q = s.points[l];
+        let a = local(&flat, flat.vertices[flat.panels[si].global[l]]);
+        let b = local(&folded, folded.vertices[s.global[l]]);
+        let c = local(&square, square.vertices[square.panels[si].global[l]]);
+        assert!((a - garmentcode::Vec3::new(q.x, q.y, 0.0)).length() < 1e-9, "flat at 0°");
+        if q.y < 15.0 {
+            turned += 1;
+            // 180°: mirrored over the line onto the left part; 90°: straight down from it.
+            assert!((b - garmentcode::Vec3::new(q.x, 30.0 - q.y, 0.0)).length() < 1e-9, "{b:?} for {q:?}");
+            assert!((c - garmentcode::Vec3::new(q.x, 15.0, q.y - 15.0)).length() < 1e-9, "{c:?} for {q:?}");
+        } else {
+            assert!((b - a).length() < 1e-9 && (c - a).length() < 1e-9, "the left part stays");
+        }
+    }
+    assert!(turned > 500, "{turned} vertices turned");
+}
+
+#[test]
+fn mesh_stitches_inner_stitches() {
+    let m = fixture_mesh(|_| {});
+    assert_eq!(m.stitches.len(), 6, "1 stitch, then 5 inner stitches");
+    let front = &m.panels[panel_index(&m, "front")];
+    let pocket = &m.panels[panel_index(&m, "pocket")];
+    // The pocket's sides are merged with the placement line's vertices, starts with starts (right_wrong).
+    for k in 0..3 {
+        let line = &front.edges[10 + k].local;
+        let side = &pocket.edges[k].local;
+        assert_eq!(line.len(), side.len());
+        for (i, (a, b)) in line.iter().zip(side).enumerate() {
+            assert_eq!(front.global[*a], pocket.global[*b]);
+            // Corners shared with the stitch before keep its label, as in the reference.
+            if i > 0 && i + 1 < line.len() {
+                let v = front.global[*a];
+                assert_eq!(m.segmentation_label(v), format!("stitch_{}", 3 + k));
+            }
+        }
+    }
+    // The dart's sides are sewn: edge 0 (bottom right) to edge 3 (bottom left), end to start.
+    let (e0, e3) = (&front.edges[4].local, &front.edges[7].local);
+    for (a, b) in e0.iter().rev().zip(e3.iter()) {
+        assert_eq!(front.global[*a], front.global[*b]);
+    }
+    // Rest lengths are stored for the faces on the dart's seam.
+    let dart_vertex = front.global[e0[e0.len() / 2]];
+    assert!(m.rest_lengths.iter().any(|(k, _)| k.contains(&dart_vertex)));
+}
+
+#[test]
+fn mesh_names_lines_holes_and_layers() {
+    let m = fixture_mesh(|_| {});
+    let label =
+        |name: &str| m.vertex_labels.iter().find(|(l, _)| l == name).map(|(_, ids)| ids.clone()).unwrap_or_else(|| panic!("no {name}"));
+    assert_eq!(label("fold_sleeve_underarm").len(), 51);
+    assert_eq!(label("line_front_pocket").len(), 15 + 12 + 14);
+    assert!(label("hole_front_keyhole").len() >= 12);
+    let facing = &m.panels[panel_index(&m, "front_facing")];
+    let mut ids = facing.global.clone();
+    ids.sort_unstable();
+    ids.dedup();
+    assert_eq!(label("layer_facing"), ids);
+    assert!(!m.vertex_labels.iter().any(|(l, _)| l.starts_with("layer_outer")));
+}

@@ -157,6 +157,25 @@ impl PanelSpec {
             .chain(self.lines.iter_mut().flat_map(|l| &mut l.edges))
     }
 
+    /// The index in [`all_edges`](Self::all_edges) of edge `edge` of the outline, hole
+    /// or line `place`, if it exists.
+    pub fn edge_index(&self, place: EdgePlace, edge: usize) -> Option<usize> {
+        let count = |edges: &[EdgeSpec]| edges.len();
+        let hole_edges = |n: usize| self.holes[..n].iter().map(|h| count(&h.edges)).sum::<usize>();
+        let (before, len) = match place {
+            EdgePlace::Outline => (0, self.edges.len()),
+            EdgePlace::Hole(h) => {
+                let len = count(&self.holes.get(h)?.edges);
+                (self.edges.len() + hole_edges(h), len)
+            }
+            EdgePlace::Line(l) => {
+                let len = count(&self.lines.get(l)?.edges);
+                (self.edges.len() + hole_edges(self.holes.len()) + self.lines[..l].iter().map(|x| count(&x.edges)).sum::<usize>(), len)
+            }
+        };
+        (edge < len).then_some(before + edge)
+    }
+
     /// Where edge `i` of [`all_edges`](Self::all_edges) is in the panel's JSON
     /// (`edges[3]`, `holes[0].edges[1]`, `lines[2].edges[0]`).
     pub fn edge_path(&self, i: usize) -> String {
