@@ -31,6 +31,13 @@
 //!    edges of faces touching a stitch, in the panel's own 2D frame, with the reference's
 //!    rule for seam edges seen from two panels ([`BoxMesh::rest_lengths`]).
 //!
+//! The format extension (`docs/pattern-extension.md`) goes through the same steps:
+//! a panel's holes' and inner lines' edges follow its outline's (sampled, stitched and
+//! numbered like them); holes bound the triangulation like the outline (left open),
+//! lines are constraints that bound nothing (rows of mesh edges); inner stitches follow
+//! the stitches; [`Fold`]s turn part of a panel when it is placed in 3D; the vertex
+//! labels name lines, holes and layers.
+//!
 //! The files the reference writes (`<name>_boxmesh.obj`, `<name>_sim_segmentation.txt`,
 //! `<name>_orig_lens.pickle`, `<name>_vertex_labels.yaml`, `<name>_material.mtl`) come from
 //! [`BoxMesh::write_files`], laid out byte for byte as the reference's readers expect.
