@@ -673,3 +673,16 @@ fn mesh_names_lines_holes_and_layers() {
     assert_eq!(label("layer_facing"), ids);
     assert!(!m.vertex_labels.iter().any(|(l, _)| l.starts_with("layer_outer")));
 }
+
+/// A malformed hole is refused by every output with the reason, never a panic.
+#[test]
+fn outputs_refuse_a_malformed_hole() {
+    let mut p = fixture();
+    panel_mut(&mut p, "front").holes[0].edges[2].endpoints[1] = 7;
+    let svg = garmentcode::draw::to_svg(&p, &Default::default()).expect_err("not drawn").to_string();
+    assert!(svg.contains("cannot draw panel 'front': hole 'waist_dart': edge 2 refers to vertex 7"), "{svg}");
+    let print = garmentcode::fabricate::files(&p, &Default::default()).expect_err("not printed").to_string();
+    assert!(print.contains("structural errors") && print.contains("hole 'waist_dart' edge 2: vertex 7 does not exist"), "{print}");
+    let mesh = garmentcode::mesh::BoxMesh::new(&p, 1.0).expect_err("not meshed");
+    assert!(matches!(&mesh, garmentcode::mesh::MeshError::Structural(m) if m.contains("hole 'waist_dart' edge 2")), "{mesh}");
+}
