@@ -27,7 +27,15 @@ pub fn run(args: CheckArgs) -> Result<i32, CliError> {
         for p in &problems {
             outln!("{p}");
         }
-        outln!("{file}: {} panels, {} stitches: {errors} error(s), {warnings} warning(s)", pattern.panels.len(), pattern.stitches.len());
+        let inner = match pattern.inner_stitches.len() {
+            0 => String::new(),
+            n => format!(" and {n} inner stitches"),
+        };
+        outln!(
+            "{file}: {} panels, {} stitches{inner}: {errors} error(s), {warnings} warning(s)",
+            pattern.panels.len(),
+            pattern.stitches.len()
+        );
     }
     Ok(if errors > 0 || (args.strict && strict_failures > 0) { 1 } else { 0 })
 }

@@ -13,7 +13,7 @@ use crate::arc::SvgArc;
 use crate::bezier::Bezier;
 use crate::error::{Error, Result};
 use crate::math::{Vec2, Vec3, rel_to_abs, rotate2d, vector_angle_clamped};
-use crate::pattern::{Curvature, PanelSpec, Pattern};
+use crate::pattern::{Curvature, EdgeSpec, HoleKind, LineKind, PanelSpec, Pattern};
 
 /// An sRGB colour.
 pub type Rgb = [u8; 3];
@@ -140,6 +140,65 @@ pub struct PlacedPanel {
     /// Whether the outline runs counter-clockwise in sheet numbers (interior on the
     /// left of the travel direction, taking x right and y as the second axis).
     pub ccw: bool,
+    /// The panel's holes, then its inner lines (format extension), placed with it.
+    pub marks: Vec<Mark>,
+}
+
+impl PlacedPanel {
+    /// Move the panel, its marks and its box by `d`.
+    fn translate(&mut self, d: Vec2) {
+        for s in self.segments.iter_mut().chain(self.marks.iter_mut().flat_map(|m| &mut m.segments)) {
+            s.translate(d);
+        }
+        self.bbox = BBox { min: self.bbox.min + d, max: self.bbox.max + d };
+    }
+}
+
+/// What a [`Mark`] is, and so how it is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MarkKind {
+    /// A hole cut out: an opening in the panel, outlined.
+    Cut,
+    /// A dart inside the panel: a dashed loop.
+    Dart,
+    /// A fold line: dash-dot, labelled "fold".
+    Fold,
+    /// Where a piece sewn on top goes: dashed.
+    Placement,
+    /// A pleat's fold: long dashes.
+    PleatFold,
+    /// Where a pleat's fold is laid: dotted.
+    PleatPlacement,
+}
+
+impl MarkKind {
+    /// The SVG class and the dash pattern (cm; none for a solid line).
+    pub fn style(self) -> (&'static str, &'static [f64]) {
+        match self {
+            MarkKind::Cut => ("cut", &[]),
+            MarkKind::Dart => ("dart", &[0.8, 0.4]),
+            MarkKind::Fold => ("fold", &[1.6, 0.4, 0.3, 0.4]),
+            MarkKind::Placement => ("placement", &[0.6, 0.4]),
+            MarkKind::PleatFold => ("pleat-fold", &[1.6, 0.6]),
+            MarkKind::PleatPlacement => ("pleat-placement", &[0.2, 0.4]),
+        }
+    }
+}
+
+/// Stroke width of hole and inner-line marks, cm.
+pub const MARK_STROKE_WIDTH: f64 = 0.15;
+/// Font size of the "fold" label on fold lines, cm.
+pub const MARK_FONT_SIZE: f64 = 2.0;
+
+/// A hole or an inner line of a panel, placed on the sheet.
+#[derive(Clone, Debug)]
+pub struct Mark {
+    /// What it is.
+    pub kind: MarkKind,
+    /// Its name in the pattern.
+    pub name: String,
+    /// Its edges (`from` and `to` index its own vertices).
+    pub segments: Vec<Segment>,
 }
 
 /// Where and how a text is anchored.
@@ -166,6 +225,8 @@ pub enum TextKind {
     EdgeId,
     /// Number in a stitch marker.
     Marker,
+    /// Label of a fold line ("fold").
+    MarkLabel,
 }
 
 /// A text on the sheet.
@@ -439,10 +500,7 @@ pub fn layout(p: &Pattern, opts: &DrawOptions) -> Result<Sheet> {
         let back_min = back.iter().map(|q| q.bbox.min.x).fold(f64::INFINITY, f64::min);
         let shift = Vec2::new(front_max - back_min + BACK_SPACING, 0.0);
         for q in &mut back {
-            for s in &mut q.segments {
-                s.translate(shift);
-            }
-            q.bbox = BBox { min: q.bbox.min + shift, max: q.bbox.max + shift };
+            q.translate(shift);
         }
     }
     let mut panels = front;
@@ -454,7 +512,7 @@ pub fn layout(p: &Pattern, opts: &DrawOptions) -> Result<Sheet> {
     let all = panels.iter().skip(1).fold(panels[0].bbox, |acc, q| acc.union(&q.bbox));
     let m = Vec2::splat(opts.margin);
     let texts = texts(&panels, opts);
-    let names: Vec<BBox> = texts.iter().filter(|t| t.kind == TextKind::Name).map(Text::bbox).collect();
+    let names: Vec<BBox> = texts.iter().filter(|t| matches!(t.kind, TextKind::Name | TextKind::MarkLabel)).map(Text::bbox).collect();
     let markers = if opts.stitch_markers { markers(p, &panels, &names)? } else { Vec::new() };
     // The margin around the panels, and room for markers moved outside them.
     let all = markers.iter().fold(BBox { min: all.min - m, max: all.max + m }, |acc, k| acc.union(&k.bbox()));
@@ -482,11 +540,7 @@ fn arrange_flat(p: &Pattern, panels: &mut [PlacedPanel]) {
             y += row_height + FLAT_GAP;
             row_height = 0.0;
         }
-        let shift = Vec2::new(x, y) - q.bbox.min;
-        for s in &mut q.segments {
-            s.translate(shift);
-        }
-        q.bbox = BBox { min: q.bbox.min + shift, max: q.bbox.max + shift };
+        q.translate(Vec2::new(x, y) - q.bbox.min);
         x += size.x + FLAT_GAP;
         row_height = row_height.max(size.y);
     }
@@ -507,7 +561,7 @@ fn place(panel: &PanelSpec) -> Result<PlacedPanel> {
 
     let flipped: Vec<Vec2> = panel.vertices.iter().map(|v| Vec2::new(v[0], -v[1])).collect();
     let offset = flipped.iter().skip(1).fold(flipped[0], |acc, v| acc.min(*v));
-    let local: Vec<Vec2> = flipped.iter().map(|v| *v - offset).collect();
+    let origin = flipped[0] - offset;
     let translation = Vec2::new(panel.translation[0], -panel.translation[1]) + offset;
 
     // In-plane rotation: angle from (0, 1) to the projection of R·(0, 1, 0); a panel
@@ -517,45 +571,74 @@ fn place(panel: &PanelSpec) -> Result<PlacedPanel> {
     let alpha = if w2.length() > 1e-12 { vector_angle_clamped(Vec2::Y, w2) } else { 0.0 };
     // Degrees and back, as the reference does (`path.rotated(degs=-angle)`).
     let theta = (-alpha.to_degrees()).to_radians();
-    let origin = local[0];
     let place_point = |q: Vec2| rotate2d(q - origin, theta) + origin + translation;
 
-    let mut segments = Vec::with_capacity(panel.edges.len());
-    for (k, e) in panel.edges.iter().enumerate() {
-        let [i, j] = e.endpoints;
-        if let Some(v) = [i, j].into_iter().find(|&v| v >= local.len()) {
-            return Err(bad(&format!("edge {k} refers to vertex {v}, but the panel has {} vertices", local.len())));
+    // The edges `edges` over `vertices` (the outline's, a hole's or a line's; `what`
+    // names them in errors) as placed segments.
+    let segments_of = |vertices: &[[f64; 2]], edges: &[EdgeSpec], what: &str| -> Result<Vec<Segment>> {
+        if !vertices.iter().all(|v| finite(v)) {
+            return Err(bad(&format!("{what}non-finite vertex")));
         }
-        let (s, t) = (local[i], local[j]);
-        // Relative control points with y negated: the flip mirrors the edge frame.
-        let ctrl = |c: [f64; 2]| -> Result<Vec2> {
-            if !finite(&c) {
-                return Err(bad(&format!("edge {k} has a non-finite control point")));
+        let local: Vec<Vec2> = vertices.iter().map(|v| Vec2::new(v[0], -v[1]) - offset).collect();
+        let mut segments = Vec::with_capacity(edges.len());
+        for (k, e) in edges.iter().enumerate() {
+            let [i, j] = e.endpoints;
+            if let Some(v) = [i, j].into_iter().find(|&v| v >= local.len()) {
+                return Err(bad(&format!("{what}edge {k} refers to vertex {v}, but there are {} vertices", local.len())));
             }
-            Ok(place_point(rel_to_abs(s, t, Vec2::new(c[0], -c[1]))))
-        };
-        let (start, end) = (place_point(s), place_point(t));
-        let shape = match &e.curvature {
-            None => Shape::Line,
-            Some(Curvature::Quadratic(c)) => Shape::Quad(ctrl(*c)?),
-            Some(Curvature::Cubic(c1, c2)) => Shape::Cubic(ctrl(*c1)?, ctrl(*c2)?),
-            Some(Curvature::Circle { radius, large_arc, right }) => {
-                if !(radius.is_finite() && *radius > 0.0) {
-                    return Err(bad(&format!("edge {k} has an invalid arc radius {radius}")));
+            let (s, t) = (local[i], local[j]);
+            // Relative control points with y negated: the flip mirrors the edge frame.
+            let ctrl = |c: [f64; 2]| -> Result<Vec2> {
+                if !finite(&c) {
+                    return Err(bad(&format!("{what}edge {k} has a non-finite control point")));
                 }
-                if start == end {
-                    return Err(bad(&format!("arc edge {k} starts where it ends")));
+                Ok(place_point(rel_to_abs(s, t, Vec2::new(c[0], -c[1]))))
+            };
+            let (start, end) = (place_point(s), place_point(t));
+            let shape = match &e.curvature {
+                None => Shape::Line,
+                Some(Curvature::Quadratic(c)) => Shape::Quad(ctrl(*c)?),
+                Some(Curvature::Cubic(c1, c2)) => Shape::Cubic(ctrl(*c1)?, ctrl(*c2)?),
+                Some(Curvature::Circle { radius, large_arc, right }) => {
+                    if !(radius.is_finite() && *radius > 0.0) {
+                        return Err(bad(&format!("{what}edge {k} has an invalid arc radius {radius}")));
+                    }
+                    if start == end {
+                        return Err(bad(&format!("{what}arc edge {k} starts where it ends")));
+                    }
+                    // y-down drawing: the sweep flag is the opposite of `right`.
+                    Shape::Arc(SvgArc::new(start, end, *radius, *large_arc, !*right))
                 }
-                // y-down drawing: the sweep flag is the opposite of `right`.
-                Shape::Arc(SvgArc::new(start, end, *radius, *large_arc, !*right))
-            }
+            };
+            segments.push(Segment { start, end, shape, from: i, to: j });
+        }
+        Ok(segments)
+    };
+
+    let segments = segments_of(&panel.vertices, &panel.edges, "")?;
+    let mut marks = Vec::with_capacity(panel.holes.len() + panel.lines.len());
+    for h in &panel.holes {
+        let kind = match h.kind {
+            HoleKind::Cut => MarkKind::Cut,
+            HoleKind::Dart => MarkKind::Dart,
         };
-        segments.push(Segment { start, end, shape, from: i, to: j });
+        let segments = segments_of(&h.vertices, &h.edges, &format!("hole '{}': ", h.name))?;
+        marks.push(Mark { kind, name: h.name.clone(), segments });
+    }
+    for l in &panel.lines {
+        let kind = match l.kind {
+            LineKind::Fold { .. } => MarkKind::Fold,
+            LineKind::Placement => MarkKind::Placement,
+            LineKind::PleatFold => MarkKind::PleatFold,
+            LineKind::PleatPlacement => MarkKind::PleatPlacement,
+        };
+        let segments = segments_of(&l.vertices, &l.edges, &format!("line '{}': ", l.name))?;
+        marks.push(Mark { kind, name: l.name.clone(), segments });
     }
 
     let bbox = segments.iter().skip(1).fold(segments[0].bbox(), |acc, s| acc.union(&s.bbox()));
     let ccw = signed_area(&segments) >= 0.0;
-    Ok(PlacedPanel { name: panel.name.clone(), segments, bbox, ccw })
+    Ok(PlacedPanel { name: panel.name.clone(), segments, bbox, ccw, marks })
 }
 
 /// The outline as a closed polygon: line ends, and `per_curve` points per curve.
@@ -797,6 +880,20 @@ fn texts(panels: &[PlacedPanel], opts: &DrawOptions) -> Vec<Text> {
                 fill: NAME_FILL,
                 anchor: Anchor::MiddleMiddle,
                 kind: TextKind::Name,
+            });
+        }
+    }
+    if opts.with_text {
+        // "fold" beside the middle of each fold line.
+        for m in panels.iter().flat_map(|q| &q.marks).filter(|m| m.kind == MarkKind::Fold && !m.segments.is_empty()) {
+            let (mid, tangent) = m.segments[m.segments.len() / 2].midpoint();
+            out.push(Text {
+                pos: mid + Vec2::new(-tangent.y, tangent.x) * MARK_FONT_SIZE * 0.6,
+                text: "fold".into(),
+                size: MARK_FONT_SIZE,
+                fill: PANEL_STROKE,
+                anchor: Anchor::MiddleMiddle,
+                kind: TextKind::MarkLabel,
             });
         }
     }

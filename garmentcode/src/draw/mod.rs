@@ -25,6 +25,11 @@
 //! at 0.6 em per character when that is wider). The sheet grows to hold markers
 //! outside the panels.
 //!
+//! Holes and inner lines of the format extension (`docs/pattern-extension.md`) are
+//! drawn inside their panels: a cut-out as an opening (the outline path's even-odd
+//! fill), a dart as a dashed loop, a fold line dash-dot with the word "fold", a
+//! placement line dashed, a pleat's fold in long dashes and its placement dotted.
+//!
 //! Both outputs are built from one layout of the sheet, so the PNG shows exactly
 //! what the SVG describes, and both are deterministic: the same pattern and options
 //! give the same bytes. Text in the PNG uses a small built-in stroke font, so no

@@ -4,12 +4,12 @@
 //! built-in stroke font. tiny-skia computes in `f32` on the same inputs every time,
 //! so the bytes are deterministic.
 
-use tiny_skia::{Color, FillRule, LineCap, LineJoin, Paint, Path, PathBuilder, Pixmap, Stroke, Transform};
+use tiny_skia::{Color, FillRule, LineCap, LineJoin, Paint, Path, PathBuilder, Pixmap, Stroke, StrokeDash, Transform};
 
 use super::font;
 use super::layout::{
-    Anchor, LEADER_WIDTH, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH, PlacedPanel, Rgb, Segment,
-    Shape, Sheet, Text, TextKind,
+    Anchor, LEADER_WIDTH, MARK_STROKE_WIDTH, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, MarkKind, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH,
+    PlacedPanel, Rgb, Segment, Shape, Sheet, Text, TextKind,
 };
 use super::options::DrawOptions;
 use crate::error::{Error, Result};
@@ -80,22 +80,31 @@ fn push_segment(pb: &mut PathBuilder, s: &Segment) {
     }
 }
 
-/// The outline, with the same subpaths as the SVG path data.
+/// The outline and the holes cut out of it, with the same subpaths as the SVG path data.
 fn outline(q: &PlacedPanel) -> Option<Path> {
     let mut pb = PathBuilder::new();
+    push_segments(&mut pb, &q.segments);
+    for m in q.marks.iter().filter(|m| m.kind == MarkKind::Cut) {
+        push_segments(&mut pb, &m.segments);
+    }
+    pb.finish()
+}
+
+/// Append segments, a new subpath wherever one does not start at the previous one's
+/// end vertex, closed where it returns to its first vertex.
+fn push_segments(pb: &mut PathBuilder, segments: &[Segment]) {
     let mut first = 0;
-    for (k, s) in q.segments.iter().enumerate() {
-        if k == 0 || q.segments[k - 1].to != s.from {
+    for (k, s) in segments.iter().enumerate() {
+        if k == 0 || segments[k - 1].to != s.from {
             pb.move_to(s.start.x as f32, s.start.y as f32);
             first = s.from;
         }
-        push_segment(&mut pb, s);
-        let ends_subpath = k + 1 == q.segments.len() || q.segments[k + 1].from != s.to;
+        push_segment(pb, s);
+        let ends_subpath = k + 1 == segments.len() || segments[k + 1].from != s.to;
         if ends_subpath && s.to == first {
             pb.close();
         }
     }
-    pb.finish()
 }
 
 fn draw_text(pm: &mut Pixmap, t: &Text, tf: Transform) {
@@ -147,13 +156,24 @@ pub fn render(sheet: &Sheet, opts: &DrawOptions) -> Result<(Vec<u8>, f64)> {
     let outline_stroke = Stroke { width: PANEL_STROKE_WIDTH as f32, ..Stroke::default() };
     for q in &sheet.panels {
         if let Some(path) = outline(q) {
-            pm.fill_path(&path, &paint(PANEL_FILL), FillRule::Winding, tf, None);
+            let rule = if q.marks.iter().any(|m| m.kind == MarkKind::Cut) { FillRule::EvenOdd } else { FillRule::Winding };
+            pm.fill_path(&path, &paint(PANEL_FILL), rule, tf, None);
             pm.stroke_path(&path, &paint(PANEL_STROKE), &outline_stroke, tf, None);
+        }
+        for m in q.marks.iter().filter(|m| m.kind != MarkKind::Cut) {
+            let mut pb = PathBuilder::new();
+            push_segments(&mut pb, &m.segments);
+            let dash = StrokeDash::new(m.kind.style().1.iter().map(|d| *d as f32).collect(), 0.0);
+            let stroke = Stroke { width: MARK_STROKE_WIDTH as f32, dash, ..Stroke::default() };
+            if let Some(path) = pb.finish() {
+                pm.stroke_path(&path, &paint(PANEL_STROKE), &stroke, tf, None);
+            }
         }
     }
 
     // Names under the stitch markers (which are small and must stay visible), indices on top.
     draw_texts(&mut pm, sheet, TextKind::Name, tf);
+    draw_texts(&mut pm, sheet, TextKind::MarkLabel, tf);
     // Every trace and leader line first, so that none runs over a disc.
     for m in &sheet.markers {
         let seg = &sheet.panels[m.panel].segments[m.edge];

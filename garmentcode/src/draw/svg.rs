@@ -1,7 +1,8 @@
 //! The sheet as an SVG document.
 //!
 //! Layers, bottom to top: panels (one `<g id="NAME">` each, the outline as one
-//! `<path>`), panel names, stitch markers (the traced edges and leader lines, then
+//! `<path>` with any cut-out holes as more subpaths, then one `<path class=KIND>` per
+//! dart and inner line), panel names, fold-line labels, stitch markers (the traced edges and leader lines, then
 //! the discs; kept above the names, which they never overlap), indices.
 //! Every number is written with at most 3 decimals (arc radii: 6) and without `-0`,
 //! so the bytes only change when the drawing does.
@@ -9,8 +10,8 @@
 use std::fmt::Write;
 
 use super::layout::{
-    Anchor, LEADER_WIDTH, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH, PlacedPanel, Rgb, Segment,
-    Shape, Sheet, Text, TextKind,
+    Anchor, LEADER_WIDTH, MARK_STROKE_WIDTH, MARKER_RING_WIDTH, MARKER_TRACE_WIDTH, MarkKind, PANEL_FILL, PANEL_STROKE, PANEL_STROKE_WIDTH,
+    PlacedPanel, Rgb, Segment, Shape, Sheet, Text, TextKind,
 };
 use crate::math::Vec2;
 
@@ -88,18 +89,25 @@ fn command(s: &Segment) -> String {
     }
 }
 
-/// The outline as path data: a new subpath wherever an edge does not start at the
-/// previous edge's end vertex, closed with `Z` when it returns to its first vertex.
+/// The outline as path data, with the holes cut out of the panel as more subpaths
+/// (drawn with the even-odd rule).
 pub fn outline(q: &PlacedPanel) -> String {
+    let cuts = q.marks.iter().filter(|m| m.kind == MarkKind::Cut);
+    std::iter::once(path_data(&q.segments)).chain(cuts.map(|m| path_data(&m.segments))).collect::<Vec<_>>().join(" ")
+}
+
+/// Segments as path data: a new subpath wherever an edge does not start at the
+/// previous edge's end vertex, closed with `Z` when it returns to its first vertex.
+fn path_data(segments: &[Segment]) -> String {
     let mut parts: Vec<String> = Vec::new();
     let mut first = 0;
-    for (k, s) in q.segments.iter().enumerate() {
-        if k == 0 || q.segments[k - 1].to != s.from {
+    for (k, s) in segments.iter().enumerate() {
+        if k == 0 || segments[k - 1].to != s.from {
             parts.push(format!("M {}", pt(s.start)));
             first = s.from;
         }
         parts.push(command(s));
-        let ends_subpath = k + 1 == q.segments.len() || q.segments[k + 1].from != s.to;
+        let ends_subpath = k + 1 == segments.len() || segments[k + 1].from != s.to;
         if ends_subpath && s.to == first {
             parts.push("Z".into());
         }
@@ -146,19 +154,35 @@ pub fn write(sheet: &Sheet, title: &str) -> String {
 
     out.push_str("<g class=\"panels\">\n");
     for q in &sheet.panels {
-        let _ = writeln!(
+        let even_odd = if q.marks.iter().any(|m| m.kind == MarkKind::Cut) { " fill-rule=\"evenodd\"" } else { "" };
+        let _ = write!(
             out,
-            "<g id=\"{}\"><path d=\"{}\" fill=\"{}\" stroke=\"{}\" stroke-width=\"{}\"/></g>",
+            "<g id=\"{}\"><path d=\"{}\" fill=\"{}\"{even_odd} stroke=\"{}\" stroke-width=\"{}\"/>",
             escape(&q.name),
             outline(q),
             rgb(PANEL_FILL),
             rgb(PANEL_STROKE),
             num(PANEL_STROKE_WIDTH)
         );
+        for m in q.marks.iter().filter(|m| m.kind != MarkKind::Cut) {
+            let (class, dash) = m.kind.style();
+            let dash: Vec<String> = dash.iter().map(|d| num(*d)).collect();
+            let _ = write!(
+                out,
+                "\n<path class=\"{class}\" data-name=\"{}\" d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" stroke-dasharray=\"{}\"/>",
+                escape(&m.name),
+                path_data(&m.segments),
+                rgb(PANEL_STROKE),
+                num(MARK_STROKE_WIDTH),
+                dash.join(" ")
+            );
+        }
+        out.push_str("</g>\n");
     }
     out.push_str("</g>\n");
 
     texts(&mut out, sheet, TextKind::Name, "names");
+    texts(&mut out, sheet, TextKind::MarkLabel, "mark-labels");
     markers(&mut out, sheet);
     texts(&mut out, sheet, TextKind::VertexId, "vertex-ids");
     texts(&mut out, sheet, TextKind::EdgeId, "edge-ids");

@@ -4,7 +4,10 @@
 //! in millimetres: each piece is a block, inserted once in the drawing; inside it
 //! the cut line is on layer 1, the mirror (fold) line on 6, notches on 4, the
 //! grainline on 7, internal lines on 8 and the sew line on 14; text on layer 1
-//! names the piece and its quantity. R12 needs no object handles and has a tiny
+//! names the piece and its quantity. Patterns using the format extension also get
+//! internal cut-outs on layer 11 and drill holes (`POINT`s) on layer 13; their fold
+//! lines are mirror lines on 6, their placement, dart and pleat lines internal
+//! lines on 8 and their pleat notches notches on 4. R12 needs no object handles and has a tiny
 //! structure, so it is written here directly: the `dxf` crate targets newer
 //! versions (handles, class tables) and stamps the time into its header, which
 //! would make every file different.
@@ -20,6 +23,10 @@ const MM: f64 = 10.0;
 
 /// The AAMA layers used, with their colours.
 const LAYERS: [(&str, u8); 7] = [("0", 7), ("1", 7), ("4", 1), ("6", 5), ("7", 3), ("8", 4), ("14", 6)];
+/// The AAMA layer of internal cut-outs (format extension), with its colour.
+const CUTOUT_LAYER: (&str, u8) = ("11", 2);
+/// The AAMA layer of drill holes (format extension), with its colour.
+const DRILL_LAYER: (&str, u8) = ("13", 1);
 
 /// A block name for a piece (letters, digits, `_` and `-`).
 pub fn block_name(piece: &str) -> String {
@@ -121,10 +128,20 @@ pub(crate) fn write_blocks(blocks: &[Block], garment: &str, notes: &[String]) ->
     w.pair(73, "0");
     w.pair(40, "0");
     w.pair(0, "ENDTAB");
+    // The layers of the format extension only where a piece uses them (so that
+    // files without them stay as they were), in the numeric order of the rest.
+    let uses = |f: fn(&Piece) -> bool| blocks.iter().any(|b| f(b.piece));
+    let mut layers: Vec<(&str, u8)> = LAYERS.to_vec();
+    if uses(|p| !p.cutouts.is_empty()) {
+        layers.insert(layers.len() - 1, CUTOUT_LAYER);
+    }
+    if uses(|p| !p.drill_holes.is_empty()) {
+        layers.insert(layers.len() - 1, DRILL_LAYER);
+    }
     w.pair(0, "TABLE");
     w.pair(2, "LAYER");
-    w.pair(70, &LAYERS.len().to_string());
-    for (name, colour) in LAYERS {
+    w.pair(70, &layers.len().to_string());
+    for (name, colour) in layers {
         w.pair(0, "LAYER");
         w.pair(2, name);
         w.pair(70, "0");
@@ -154,6 +171,17 @@ pub(crate) fn write_blocks(blocks: &[Block], garment: &str, notes: &[String]) ->
         }
         for l in &p.internal {
             w.polyline("8", l, false);
+        }
+        for l in &p.mirror_lines {
+            w.polyline("6", l, false);
+        }
+        for c in &p.cutouts {
+            w.polyline("11", c, true);
+        }
+        for d in &p.drill_holes {
+            w.pair(0, "POINT");
+            w.pair(8, "13");
+            w.xy(10, *d);
         }
         let h = p.text_size;
         let texts = [

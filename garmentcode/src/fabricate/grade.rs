@@ -169,7 +169,8 @@ fn centred(mut p: Piece) -> Piece {
     if let Some(f) = &mut p.fold {
         *f = f.map(|q| q + d);
     }
-    p.internal.iter_mut().for_each(shift);
+    p.internal.iter_mut().chain(&mut p.cutouts).chain(&mut p.mirror_lines).for_each(shift);
+    p.drill_holes.iter_mut().for_each(|q| *q += d);
     p.label_at += d;
     for (_, xf) in &mut p.panels {
         xf.t += d;

@@ -81,6 +81,7 @@
 pub mod dxf;
 pub mod geom;
 mod grade;
+mod inner;
 mod pdf;
 mod piece;
 pub mod sheet;

@@ -329,7 +329,7 @@ pub(crate) fn panel_notches(
 
 /// The slit of a notch at `at` whose outer end is the cut line's point nearest to
 /// `at + reach`: [`NOTCH_LENGTH`] from the cut line inwards (at most to the sew line).
-fn slit(at: Vec2, reach: Vec2, cut: &[Vec2], edges: Vec<(String, usize)>) -> Notch {
+pub(super) fn slit(at: Vec2, reach: Vec2, cut: &[Vec2], edges: Vec<(String, usize)>) -> Notch {
     let outer = geom::nearest_on_closed(at + reach, cut);
     let len = (outer - at).length();
     let inward = (at - outer).normalize_or_zero();
@@ -426,7 +426,7 @@ pub(crate) fn build(p: &Pattern, opts: &PrintOptions) -> Result<Vec<Piece>> {
                 None => merged.push((at, r, 1, vec![id])),
             }
         }
-        let notches: Vec<Notch> = merged
+        let mut notches: Vec<Notch> = merged
             .into_iter()
             .map(|(at, r, count, ids)| slit(at, r / count as f64, &cut, ids))
             .filter(|s| (s.outer - s.sew).length() > 1e-6)
@@ -462,6 +462,11 @@ pub(crate) fn build(p: &Pattern, opts: &PrintOptions) -> Result<Vec<Piece>> {
             let c = tip + axis * 1.0_f64.min(into.length() / 3.0);
             internal.push((0..=16).map(|k| c + Vec2::from_angle(k as f64 / 16.0 * std::f64::consts::TAU) * 0.3).collect());
         }
+        // Holes and inner lines (format extension).
+        let reach = allow.iter().copied().fold(0.0, f64::max) + 1.0;
+        let ext = super::inner::marks(panel, g, &sew, &cut, reach);
+        internal.extend(ext.internal);
+        notches.extend(ext.notches);
         let fold = gr.fold_edge.map(|f| [g.edges[f].start, g.edges[f].end]);
         let cut_text = opts_cut_text(gr.cut);
         let (centre, room) = interior_point(&sew);
@@ -491,6 +496,9 @@ pub(crate) fn build(p: &Pattern, opts: &PrintOptions) -> Result<Vec<Piece>> {
             grain,
             fold,
             internal,
+            cutouts: ext.cutouts,
+            mirror_lines: ext.mirror_lines,
+            drill_holes: ext.drill_holes,
             label_at,
             text_size,
             labels: lines,

@@ -159,6 +159,9 @@ fn arrow_head(tip: Vec2, dir: Vec2, size: f64) -> Vec<Vec2> {
     vec![tip - dir * size + side * size * 0.5, tip, tip - dir * size - side * size * 0.5]
 }
 
+/// Radius of a drill-hole mark on the drawings, cm.
+const DRILL_RADIUS: f64 = 0.3;
+
 /// The drawing of one piece through `xf`.
 pub fn piece_prims(p: &Piece, xf: &Xf) -> Vec<Prim> {
     let map = |v: &[Vec2]| v.iter().map(|q| xf.apply(*q)).collect::<Vec<_>>();
@@ -196,6 +199,23 @@ pub fn piece_prims(p: &Piece, xf: &Xf) -> Vec<Prim> {
     }
     for line in &p.internal {
         out.push(path(map(line), false, Style::Internal));
+    }
+    for hole in &p.cutouts {
+        out.push(path(map(hole), true, Style::Cut));
+    }
+    for line in &p.mirror_lines {
+        out.push(path(map(line), false, Style::Fold));
+    }
+    for c in &p.drill_holes {
+        // A small circle with a cross, as drill holes are marked.
+        let c = xf.apply(*c);
+        out.push(path(
+            (0..16).map(|k| c + Vec2::from_angle(k as f64 / 16.0 * std::f64::consts::TAU) * DRILL_RADIUS).collect(),
+            true,
+            Style::Internal,
+        ));
+        out.push(path(vec![c - Vec2::X * DRILL_RADIUS, c + Vec2::X * DRILL_RADIUS], false, Style::Internal));
+        out.push(path(vec![c - Vec2::Y * DRILL_RADIUS, c + Vec2::Y * DRILL_RADIUS], false, Style::Internal));
     }
     for (k, text) in p.labels.iter().enumerate() {
         let at = xf.apply(p.label_at - Vec2::new(0.0, 1.25 * p.text_size * k as f64));

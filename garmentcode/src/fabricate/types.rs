@@ -218,8 +218,15 @@ pub struct Piece {
     pub grain: [Vec2; 2],
     /// The edge to place on the fold, when cut on the fold.
     pub fold: Option<[Vec2; 2]>,
-    /// Internal lines (gathering marks).
+    /// Internal lines (gathering marks; the format extension's darts, placement
+    /// and pleat lines).
     pub internal: Vec<Vec<Vec2>>,
+    /// Holes cut out of the piece (format extension), closed.
+    pub cutouts: Vec<Vec<Vec2>>,
+    /// Fold lines inside the piece (format extension: the AAMA mirror line).
+    pub mirror_lines: Vec<Vec<Vec2>>,
+    /// Drill holes (format extension: placement-line corners and dart points).
+    pub drill_holes: Vec<Vec2>,
     /// Where the first label line starts (left end of its baseline).
     pub label_at: Vec2,
     /// Height of the label text (cm).

@@ -10,7 +10,10 @@
 use crate::error::{Error, Result};
 use crate::math::{Vec2, abs_to_rel};
 use crate::parity::float_repr::write_python_float;
-use crate::pattern::{Curvature, EdgeSpec, PanelSpec, Pattern, Properties, StitchSide, StitchSpec};
+use crate::pattern::{
+    Curvature, EXTENSION_VERSION, EdgePlace, EdgeSpec, Hole, HoleKind, InnerLine, InnerSide, InnerStitch, Layer, LineKind, PanelSpec,
+    Pattern, Properties, StitchSide, StitchSpec,
+};
 use serde_json::Value;
 use std::fmt::Write;
 
@@ -29,6 +32,13 @@ pub const MAX_EDGES: usize = 5_000;
 /// Longest name (of a pattern or panel) or label (garment and size on a print), in
 /// characters: the reference's are under 40, and every output repeats them.
 pub const MAX_NAME_CHARS: usize = 100;
+/// Most holes and inner lines one panel may hold together (format extension; a
+/// garment has a few darts, pockets and folds per panel). Their edges count in
+/// [`MAX_EDGES_PER_PANEL`] and [`MAX_EDGES`] with the outline's.
+pub const MAX_INNER_LOOPS_PER_PANEL: usize = 100;
+/// Most stitches on holes and inner lines (`pattern.inner_stitches`) a
+/// specification may hold.
+pub const MAX_INNER_STITCHES: usize = 1_000;
 
 /// Refuse a name or label longer than [`MAX_NAME_CHARS`] or holding control
 /// characters; `what` says where it is (for the error).
@@ -83,7 +93,7 @@ impl Pattern {
     /// under 180°) as the straight edge it is, so that a nearly straight neckline
     /// (a body with level shoulders) reads and writes within the limits.
     pub fn straighten_flat_arcs(&mut self) {
-        for e in self.panels.iter_mut().flat_map(|p| &mut p.edges) {
+        for e in self.panels.iter_mut().flat_map(PanelSpec::all_edges_mut) {
             if e.curvature.as_ref().is_some_and(Curvature::is_flat_arc) {
                 e.curvature = None;
             }
@@ -100,25 +110,42 @@ impl Pattern {
         if self.panels.len() > MAX_PANELS {
             return Err(Error::Input(format!("{} panels: at most {MAX_PANELS} are accepted", self.panels.len())));
         }
-        let edges: usize = self.panels.iter().map(|p| p.edges.len()).sum();
+        let edges: usize = self.panels.iter().map(|p| p.all_edges().count()).sum();
         if edges > MAX_EDGES {
             return Err(Error::Input(format!("{edges} edges in all: at most {MAX_EDGES} are accepted")));
+        }
+        if self.inner_stitches.len() > MAX_INNER_STITCHES {
+            return Err(Error::Input(format!(
+                "pattern.inner_stitches: {} stitches, at most {MAX_INNER_STITCHES} are accepted",
+                self.inner_stitches.len()
+            )));
         }
         check_name("name", &self.name)?;
         for p in &self.panels {
             check_name("pattern.panels", &p.name)?;
             let at = format!("pattern.panels.{}", p.name);
-            if p.edges.len() > MAX_EDGES_PER_PANEL {
-                return Err(Error::Input(format!("{at}: {} edges, at most {MAX_EDGES_PER_PANEL} are accepted", p.edges.len())));
+            let n_edges = p.all_edges().count();
+            if n_edges > MAX_EDGES_PER_PANEL {
+                return Err(Error::Input(format!("{at}: {n_edges} edges, at most {MAX_EDGES_PER_PANEL} are accepted")));
             }
-            let coords = p.vertices.iter().flatten().chain(&p.translation);
+            if p.holes.len() + p.lines.len() > MAX_INNER_LOOPS_PER_PANEL {
+                return Err(Error::Input(format!(
+                    "{at}: {} holes and inner lines, at most {MAX_INNER_LOOPS_PER_PANEL} are accepted",
+                    p.holes.len() + p.lines.len()
+                )));
+            }
+            for (what, name) in p.holes.iter().map(|h| ("holes", &h.name)).chain(p.lines.iter().map(|l| ("lines", &l.name))) {
+                check_name(&format!("{at}.{what}"), name)?;
+            }
+            let inner_vertices = p.holes.iter().flat_map(|h| &h.vertices).chain(p.lines.iter().flat_map(|l| &l.vertices));
+            let coords = p.vertices.iter().chain(inner_vertices).flatten().chain(&p.translation);
             if let Some(x) = coords.copied().find(|x| far(*x)) {
                 return Err(Error::Input(format!(
                     "{at}: coordinate {} cm is beyond ±{MAX_EXTENT_CM} cm (100 m); no garment is that large",
                     crate::message::short(x)
                 )));
             }
-            for (i, e) in p.edges.iter().enumerate() {
+            for (i, e) in p.all_edges().enumerate() {
                 let bad = match &e.curvature {
                     Some(Curvature::Quadratic(c)) => c.iter().any(|x| x.abs() > MAX_CONTROL),
                     Some(Curvature::Cubic(c1, c2)) => c1.iter().chain(c2).any(|x| x.abs() > MAX_CONTROL),
@@ -127,7 +154,8 @@ impl Pattern {
                 };
                 if bad {
                     return Err(Error::Input(format!(
-                        "{at}.edges[{i}].curvature: a control point more than {MAX_CONTROL} edge lengths away or a radius beyond {MAX_EXTENT_CM} cm"
+                        "{at}.{}.curvature: a control point more than {MAX_CONTROL} edge lengths away or a radius beyond {MAX_EXTENT_CM} cm",
+                        p.edge_path(i)
                     )));
                 }
             }
@@ -161,22 +189,19 @@ impl Pattern {
             w.open('[');
             for (i, s) in self.stitches.iter().enumerate() {
                 w.sep(i);
-                w.open('[');
-                for (k, side) in s.sides.iter().enumerate() {
-                    w.sep(k);
-                    w.open('{');
-                    w.field("panel");
-                    w.string(&side.panel);
-                    w.sep(1);
-                    w.field("edge");
-                    w.index(side.edge);
-                    w.close('}');
-                }
-                if s.right_wrong {
-                    w.sep(2);
-                    w.literal("right_wrong");
-                }
-                w.close(']');
+                let [a, b] = &s.sides;
+                write_stitch(&mut w, [(&a.panel, EdgePlace::Outline, a.edge), (&b.panel, EdgePlace::Outline, b.edge)], s.right_wrong);
+            }
+            w.close(']');
+        }
+        if !self.inner_stitches.is_empty() {
+            w.sep(2);
+            w.field("inner_stitches");
+            w.open('[');
+            for (i, s) in self.inner_stitches.iter().enumerate() {
+                w.sep(i);
+                let [a, b] = &s.sides;
+                write_stitch(&mut w, [(&a.panel, a.place, a.edge), (&b.panel, b.place, b.edge)], s.right_wrong);
             }
             w.close(']');
         }
@@ -216,6 +241,11 @@ impl Pattern {
             w.key(k);
             w.value(v)?;
         }
+        if self.uses_extension() {
+            w.sep(4);
+            w.field("extension_version");
+            w.index(EXTENSION_VERSION as usize);
+        }
         w.close('}');
         w.close('}');
         w.out.push('\n');
@@ -234,9 +264,10 @@ impl Pattern {
         if u != 100.0 {
             let k = 100.0 / u;
             for p in &mut self.panels {
-                p.vertices.iter_mut().for_each(|v| *v = [v[0] * k, v[1] * k]);
+                let inner = p.holes.iter_mut().flat_map(|h| &mut h.vertices).chain(p.lines.iter_mut().flat_map(|l| &mut l.vertices));
+                p.vertices.iter_mut().chain(inner).for_each(|v| *v = [v[0] * k, v[1] * k]);
                 p.translation = p.translation.map(|t| t * k);
-                for e in &mut p.edges {
+                for e in p.all_edges_mut() {
                     if let Some(Curvature::Circle { radius, .. }) = &mut e.curvature {
                         *radius *= k;
                     }
@@ -257,84 +288,197 @@ fn write_panel(w: &mut Writer, p: &PanelSpec) -> Result<()> {
     w.field("rotation");
     w.float_list(&p.rotation)?;
     w.sep(2);
+    write_geometry(w, &p.vertices, &p.edges)?;
+    if let Some(l) = &p.label {
+        w.sep(4);
+        w.field("label");
+        w.string(l);
+    }
+    if !p.holes.is_empty() {
+        w.sep(4);
+        w.field("holes");
+        w.open('[');
+        for (i, h) in p.holes.iter().enumerate() {
+            w.sep(i);
+            w.open('{');
+            w.field("name");
+            w.string(&h.name);
+            w.sep(1);
+            w.field("kind");
+            w.literal(match h.kind {
+                HoleKind::Cut => "cut",
+                HoleKind::Dart => "dart",
+            });
+            w.sep(2);
+            write_geometry(w, &h.vertices, &h.edges)?;
+            w.close('}');
+        }
+        w.close(']');
+    }
+    if !p.lines.is_empty() {
+        w.sep(4);
+        w.field("lines");
+        w.open('[');
+        for (i, l) in p.lines.iter().enumerate() {
+            w.sep(i);
+            w.open('{');
+            w.field("name");
+            w.string(&l.name);
+            w.sep(1);
+            w.field("kind");
+            w.literal(line_kind_name(l.kind));
+            if let LineKind::Fold { angle } = l.kind {
+                w.sep(2);
+                w.field("angle");
+                w.float(angle)?;
+            }
+            w.sep(2);
+            write_geometry(w, &l.vertices, &l.edges)?;
+            w.close('}');
+        }
+        w.close(']');
+    }
+    if p.layer != Layer::Outer {
+        w.sep(4);
+        w.field("layer");
+        w.literal(layer_name(p.layer));
+    }
+    w.close('}');
+    Ok(())
+}
+
+/// The JSON name of a line kind.
+fn line_kind_name(k: LineKind) -> &'static str {
+    match k {
+        LineKind::Fold { .. } => "fold",
+        LineKind::Placement => "placement",
+        LineKind::PleatFold => "pleat_fold",
+        LineKind::PleatPlacement => "pleat_placement",
+    }
+}
+
+/// The JSON name of a layer.
+fn layer_name(l: Layer) -> &'static str {
+    match l {
+        Layer::Outer => "outer",
+        Layer::Facing => "facing",
+        Layer::Lining => "lining",
+    }
+}
+
+/// One stitch: two sides `{"panel", ["hole" | "line"], "edge"}` and the optional
+/// `"right_wrong"`.
+fn write_stitch(w: &mut Writer, sides: [(&str, EdgePlace, usize); 2], right_wrong: bool) {
+    w.open('[');
+    for (k, (panel, place, edge)) in sides.into_iter().enumerate() {
+        w.sep(k);
+        w.open('{');
+        w.field("panel");
+        w.string(panel);
+        match place {
+            EdgePlace::Outline => {}
+            EdgePlace::Hole(h) => {
+                w.sep(1);
+                w.field("hole");
+                w.index(h);
+            }
+            EdgePlace::Line(l) => {
+                w.sep(1);
+                w.field("line");
+                w.index(l);
+            }
+        }
+        w.sep(1);
+        w.field("edge");
+        w.index(edge);
+        w.close('}');
+    }
+    if right_wrong {
+        w.sep(2);
+        w.literal("right_wrong");
+    }
+    w.close(']');
+}
+
+/// `"vertices": [...], "edges": [...]` (of an outline, a hole or a line).
+fn write_geometry(w: &mut Writer, vertices: &[[f64; 2]], edges: &[EdgeSpec]) -> Result<()> {
     w.field("vertices");
-    if p.vertices.is_empty() {
+    if vertices.is_empty() {
         w.out.push_str("[]");
     } else {
         w.open('[');
-        for (i, v) in p.vertices.iter().enumerate() {
+        for (i, v) in vertices.iter().enumerate() {
             w.sep(i);
             w.float_list(v)?;
         }
         w.close(']');
     }
-    w.sep(3);
+    w.sep(1);
     w.field("edges");
-    if p.edges.is_empty() {
+    if edges.is_empty() {
         w.out.push_str("[]");
     } else {
         w.open('[');
-        for (i, e) in p.edges.iter().enumerate() {
+        for (i, e) in edges.iter().enumerate() {
             w.sep(i);
-            w.open('{');
-            w.field("endpoints");
-            w.open('[');
-            w.index(e.endpoints[0]);
-            w.sep(1);
-            w.index(e.endpoints[1]);
-            w.close(']');
-            if let Some(l) = &e.label {
-                w.sep(1);
-                w.field("label");
-                w.string(l);
-            }
-            if let Some(c) = &e.curvature {
-                w.sep(1);
-                w.field("curvature");
-                w.open('{');
-                w.field("type");
-                match c {
-                    Curvature::Quadratic(cp) => {
-                        w.literal("quadratic");
-                        w.sep(1);
-                        w.field("params");
-                        w.open('[');
-                        w.float_list(cp)?;
-                        w.close(']');
-                    }
-                    Curvature::Cubic(c1, c2) => {
-                        w.literal("cubic");
-                        w.sep(1);
-                        w.field("params");
-                        w.open('[');
-                        w.float_list(c1)?;
-                        w.sep(1);
-                        w.float_list(c2)?;
-                        w.close(']');
-                    }
-                    Curvature::Circle { radius, large_arc, right } => {
-                        w.literal("circle");
-                        w.sep(1);
-                        w.field("params");
-                        w.open('[');
-                        w.float(*radius)?;
-                        w.sep(1);
-                        w.out.push(if *large_arc { '1' } else { '0' });
-                        w.sep(2);
-                        w.out.push(if *right { '1' } else { '0' });
-                        w.close(']');
-                    }
-                }
-                w.close('}');
-            }
-            w.close('}');
+            write_edge(w, e)?;
         }
         w.close(']');
     }
-    if let Some(l) = &p.label {
-        w.sep(4);
+    Ok(())
+}
+
+fn write_edge(w: &mut Writer, e: &EdgeSpec) -> Result<()> {
+    w.open('{');
+    w.field("endpoints");
+    w.open('[');
+    w.index(e.endpoints[0]);
+    w.sep(1);
+    w.index(e.endpoints[1]);
+    w.close(']');
+    if let Some(l) = &e.label {
+        w.sep(1);
         w.field("label");
         w.string(l);
+    }
+    if let Some(c) = &e.curvature {
+        w.sep(1);
+        w.field("curvature");
+        w.open('{');
+        w.field("type");
+        match c {
+            Curvature::Quadratic(cp) => {
+                w.literal("quadratic");
+                w.sep(1);
+                w.field("params");
+                w.open('[');
+                w.float_list(cp)?;
+                w.close(']');
+            }
+            Curvature::Cubic(c1, c2) => {
+                w.literal("cubic");
+                w.sep(1);
+                w.field("params");
+                w.open('[');
+                w.float_list(c1)?;
+                w.sep(1);
+                w.float_list(c2)?;
+                w.close(']');
+            }
+            Curvature::Circle { radius, large_arc, right } => {
+                w.literal("circle");
+                w.sep(1);
+                w.field("params");
+                w.open('[');
+                w.float(*radius)?;
+                w.sep(1);
+                w.out.push(if *large_arc { '1' } else { '0' });
+                w.sep(2);
+                w.out.push(if *right { '1' } else { '0' });
+                w.close(']');
+            }
+        }
+        w.close('}');
     }
     w.close('}');
     Ok(())
@@ -518,6 +662,18 @@ fn read_pattern(v: &Value) -> Result<Pattern> {
             p.stitches.push(read_stitch(s, &format!("pattern.stitches[{i}]"))?);
         }
     }
+    if let Some(st) = pat.get("inner_stitches") {
+        let list = arr(st, "pattern.inner_stitches")?;
+        if list.len() > MAX_INNER_STITCHES {
+            return Err(Error::Input(format!(
+                "pattern.inner_stitches: {} stitches, at most {MAX_INNER_STITCHES} are accepted",
+                list.len()
+            )));
+        }
+        for (i, s) in list.iter().enumerate() {
+            p.inner_stitches.push(read_inner_stitch(s, &format!("pattern.inner_stitches[{i}]"))?);
+        }
+    }
     if let Some(order) = pat.get("panel_order") {
         let list = arr(order, "pattern.panel_order")?;
         let mut names = Vec::new();
@@ -554,6 +710,16 @@ fn read_properties(v: &Value) -> Result<Properties> {
             "normalize_panel_translation" => pr.normalize_panel_translation = boolean(x, &path)?,
             "normalized_edge_loops" => pr.normalized_edge_loops = boolean(x, &path)?,
             "units_in_meter" => pr.units_in_meter = number(x, &path)?,
+            // Written again from what the pattern holds (see `Pattern::uses_extension`).
+            "extension_version" => match x.as_u64() {
+                Some(v) if (1..=u64::from(EXTENSION_VERSION)).contains(&v) => {}
+                _ => {
+                    return Err(Error::Input(format!(
+                        "{path}: expected a format extension version from 1 to {EXTENSION_VERSION}, got {} (a newer garmentcode wrote this file?)",
+                        kind(x)
+                    )));
+                }
+            },
             _ => pr.extra.push((k.clone(), x.clone())),
         }
     }
@@ -566,21 +732,89 @@ fn read_panel(name: &str, v: &Value, absolute: bool) -> Result<PanelSpec> {
     let m = obj(v, &path)?;
     let translation = vec_n::<3>(get(m, "translation", &path)?, &format!("{path}.translation"))?;
     let rotation = vec_n::<3>(get(m, "rotation", &path)?, &format!("{path}.rotation"))?;
-    let vl = arr(get(m, "vertices", &path)?, &format!("{path}.vertices"))?;
-    let mut vertices = Vec::with_capacity(vl.len());
-    for (i, x) in vl.iter().enumerate() {
-        vertices.push(vec_n::<2>(x, &format!("{path}.vertices[{i}]"))?);
-    }
-    let el = arr(get(m, "edges", &path)?, &format!("{path}.edges"))?;
-    let mut edges = Vec::with_capacity(el.len());
-    for (i, x) in el.iter().enumerate() {
-        edges.push(read_edge(x, &format!("{path}.edges[{i}]"), &vertices, absolute)?);
-    }
+    let (vertices, edges) = read_geometry(m, &path, absolute)?;
     let label = match m.get("label") {
         None | Some(Value::Null) => None,
         Some(l) => Some(string(l, &format!("{path}.label"))?.to_string()).filter(|s| !s.is_empty()),
     };
-    Ok(PanelSpec::new(name, translation, rotation, vertices, edges, label))
+    let mut panel = PanelSpec::new(name, translation, rotation, vertices, edges, label);
+    let inner_list = |key: &str| -> Result<&[Value]> {
+        let Some(v) = m.get(key) else { return Ok(&[]) };
+        let list = arr(v, &format!("{path}.{key}"))?;
+        if list.len() > MAX_INNER_LOOPS_PER_PANEL {
+            return Err(Error::Input(format!("{path}.{key}: {} items, at most {MAX_INNER_LOOPS_PER_PANEL} are accepted", list.len())));
+        }
+        Ok(list)
+    };
+    for (i, h) in inner_list("holes")?.iter().enumerate() {
+        let hp = format!("{path}.holes[{i}]");
+        let hm = obj(h, &hp)?;
+        let name = inner_name(hm, &hp)?;
+        let kind = match string(get(hm, "kind", &hp)?, &format!("{hp}.kind"))? {
+            "cut" => HoleKind::Cut,
+            "dart" => HoleKind::Dart,
+            other => {
+                return Err(Error::Input(format!("{hp}.kind: expected \"cut\" or \"dart\", got {}", crate::message::quote(other))));
+            }
+        };
+        let (vertices, edges) = read_geometry(hm, &hp, absolute)?;
+        panel.holes.push(Hole { name, kind, vertices, edges });
+    }
+    for (i, l) in inner_list("lines")?.iter().enumerate() {
+        let lp = format!("{path}.lines[{i}]");
+        let lm = obj(l, &lp)?;
+        let name = inner_name(lm, &lp)?;
+        let kind = match string(get(lm, "kind", &lp)?, &format!("{lp}.kind"))? {
+            "fold" => LineKind::Fold { angle: number(get(lm, "angle", &lp)?, &format!("{lp}.angle"))? },
+            "placement" => LineKind::Placement,
+            "pleat_fold" => LineKind::PleatFold,
+            "pleat_placement" => LineKind::PleatPlacement,
+            other => {
+                return Err(Error::Input(format!(
+                    "{lp}.kind: expected \"fold\", \"placement\", \"pleat_fold\" or \"pleat_placement\", got {}",
+                    crate::message::quote(other)
+                )));
+            }
+        };
+        let (vertices, edges) = read_geometry(lm, &lp, absolute)?;
+        panel.lines.push(InnerLine { name, kind, vertices, edges });
+    }
+    if let Some(l) = m.get("layer") {
+        panel.layer = match string(l, &format!("{path}.layer"))? {
+            "outer" => Layer::Outer,
+            "facing" => Layer::Facing,
+            "lining" => Layer::Lining,
+            other => {
+                return Err(Error::Input(format!(
+                    "{path}.layer: expected \"outer\", \"facing\" or \"lining\", got {}",
+                    crate::message::quote(other)
+                )));
+            }
+        };
+    }
+    Ok(panel)
+}
+
+/// The `name` of a hole or an inner line.
+fn inner_name(m: &serde_json::Map<String, Value>, path: &str) -> Result<String> {
+    let name = string(get(m, "name", path)?, &format!("{path}.name"))?;
+    check_name(&format!("{path}.name"), name)?;
+    Ok(name.to_string())
+}
+
+/// The `vertices` and `edges` of an outline, a hole or an inner line at `path`.
+fn read_geometry(m: &serde_json::Map<String, Value>, path: &str, absolute: bool) -> Result<(Vec<[f64; 2]>, Vec<EdgeSpec>)> {
+    let vl = arr(get(m, "vertices", path)?, &format!("{path}.vertices"))?;
+    let mut vertices = Vec::with_capacity(vl.len());
+    for (i, x) in vl.iter().enumerate() {
+        vertices.push(vec_n::<2>(x, &format!("{path}.vertices[{i}]"))?);
+    }
+    let el = arr(get(m, "edges", path)?, &format!("{path}.edges"))?;
+    let mut edges = Vec::with_capacity(el.len());
+    for (i, x) in el.iter().enumerate() {
+        edges.push(read_edge(x, &format!("{path}.edges[{i}]"), &vertices, absolute)?);
+    }
+    Ok((vertices, edges))
 }
 
 fn read_edge(v: &Value, path: &str, vertices: &[[f64; 2]], absolute: bool) -> Result<EdgeSpec> {
@@ -662,6 +896,16 @@ fn endpoint_positions(vertices: &[[f64; 2]], ep: [usize; 2], path: &str) -> Resu
 }
 
 fn read_stitch(v: &Value, path: &str) -> Result<StitchSpec> {
+    let s = read_inner_stitch(v, path)?;
+    let mut sides = s.sides.into_iter().enumerate().map(|(k, side)| match side.place {
+        EdgePlace::Outline => Ok(StitchSide { panel: side.panel, edge: side.edge }),
+        _ => Err(Error::Input(format!("{path}[{k}]: a side on a hole or an inner line belongs in pattern.inner_stitches"))),
+    });
+    let (a, b) = (sides.next().expect("two sides")?, sides.next().expect("two sides")?);
+    Ok(StitchSpec { sides: [a, b], right_wrong: s.right_wrong })
+}
+
+fn read_inner_stitch(v: &Value, path: &str) -> Result<InnerStitch> {
     let list = arr(v, path)?;
     if list.len() < 2 || list.len() > 3 {
         return Err(Error::Input(format!("{path}: a stitch has two sides and an optional \"right_wrong\", got {} items", list.len())));
@@ -672,8 +916,18 @@ fn read_stitch(v: &Value, path: &str) -> Result<StitchSpec> {
         let m = obj(s, &sp)?;
         let panel = string(get(m, "panel", &sp)?, &format!("{sp}.panel"))?.to_string();
         check_name(&format!("{sp}.panel"), &panel)?;
+        let place = match (m.get("hole"), m.get("line")) {
+            (None, None) => EdgePlace::Outline,
+            (Some(h), None) => EdgePlace::Hole(index(h, &format!("{sp}.hole"))?),
+            (None, Some(l)) => EdgePlace::Line(index(l, &format!("{sp}.line"))?),
+            (Some(_), Some(_)) => {
+                return Err(Error::Input(format!(
+                    "{sp}: a side is on a \"hole\" or on a \"line\" (or on the outline, with neither), not both"
+                )));
+            }
+        };
         let edge = index(get(m, "edge", &sp)?, &format!("{sp}.edge"))?;
-        sides.push(StitchSide { panel, edge });
+        sides.push(InnerSide { panel, place, edge });
     }
     let right_wrong = match list.get(2) {
         None => false,
@@ -682,7 +936,7 @@ fn read_stitch(v: &Value, path: &str) -> Result<StitchSpec> {
     };
     let b = sides.pop().expect("two sides");
     let a = sides.pop().expect("two sides");
-    Ok(StitchSpec { sides: [a, b], right_wrong })
+    Ok(InnerStitch { sides: [a, b], right_wrong })
 }
 
 fn obj<'a>(v: &'a Value, path: &str) -> Result<&'a serde_json::Map<String, Value>> {

@@ -31,6 +31,13 @@
 //!    edges of faces touching a stitch, in the panel's own 2D frame, with the reference's
 //!    rule for seam edges seen from two panels ([`BoxMesh::rest_lengths`]).
 //!
+//! The format extension (`docs/pattern-extension.md`) goes through the same steps:
+//! a panel's holes' and inner lines' edges follow its outline's (sampled, stitched and
+//! numbered like them); holes bound the triangulation like the outline (left open),
+//! lines are constraints that bound nothing (rows of mesh edges); inner stitches follow
+//! the stitches; [`Fold`]s turn part of a panel when it is placed in 3D; the vertex
+//! labels name lines, holes and layers.
+//!
 //! The files the reference writes (`<name>_boxmesh.obj`, `<name>_sim_segmentation.txt`,
 //! `<name>_orig_lens.pickle`, `<name>_vertex_labels.yaml`, `<name>_material.mtl`) come from
 //! [`BoxMesh::write_files`], laid out byte for byte as the reference's readers expect.
@@ -212,12 +219,85 @@ pub struct PanelMesh {
     pub grain: Vec3,
     /// First texture id of this panel's local vertices.
     pub texture_offset: usize,
+    /// The panel's fold lines (format extension), applied in this order by [`to_3d`](Self::to_3d).
+    pub folds: Vec<Fold>,
+}
+
+/// A fold line of a panel, as the box mesh places it: the part of the panel to the
+/// right of the line (through its first and last vertex, looking along it) turns
+/// about it by `angle`, right-handed about its direction (towards the panel's `−z`,
+/// away from its front, for angles under 180°; at 180° it lies folded flat over the
+/// left part).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fold {
+    /// A point of the line (panel-local, cm).
+    pub at: Vec2,
+    /// The line's unit direction.
+    pub direction: Vec2,
+    /// The turn, radians.
+    pub angle: f64,
+}
+
+impl Fold {
+    /// The fold lines of a panel.
+    fn of(p: &PanelSpec) -> Vec<Fold> {
+        p.lines
+            .iter()
+            .filter_map(|l| match l.kind {
+                crate::LineKind::Fold { angle } => {
+                    let (a, b) = (Vec2::from(*l.vertices.first()?), Vec2::from(*l.vertices.last()?));
+                    let direction = (b - a).try_normalize()?;
+                    Some(Fold { at: a, direction, angle: angle.to_radians() })
+                }
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// `q` (the panel-local 3D image of the 2D point `p`) turned if `p` lies right of the line.
+    fn turn(&self, p: Vec2, q: Vec3) -> Vec3 {
+        if self.direction.perp_dot(p - self.at) >= 0.0 {
+            return q;
+        }
+        let axis = Vec3::new(self.direction.x, self.direction.y, 0.0);
+        let r = q - Vec3::new(self.at.x, self.at.y, 0.0);
+        // Rodrigues' rotation about the line.
+        let (s, c) = self.angle.sin_cos();
+        let turned = r * c + axis.cross(r) * s + axis * axis.dot(r) * (1.0 - c);
+        turned + Vec3::new(self.at.x, self.at.y, 0.0)
+    }
+}
+
+/// Where each of a panel's edges (in the order of `PanelSpec::all_edges`) lies: the
+/// ranges of its holes' and its lines' edges.
+struct EdgeKinds {
+    holes: Vec<std::ops::Range<usize>>,
+    lines: Vec<std::ops::Range<usize>>,
+}
+
+impl EdgeKinds {
+    fn of(p: &PanelSpec) -> EdgeKinds {
+        let mut at = p.edges.len();
+        let mut next = |n: usize| {
+            at += n;
+            at - n..at
+        };
+        let holes = p.holes.iter().map(|h| next(h.edges.len())).collect();
+        let lines = p.lines.iter().map(|l| next(l.edges.len())).collect();
+        EdgeKinds { holes, lines }
+    }
+
+    /// Whether edge `i` starts, and whether it ends, an inner line.
+    fn line_ends(&self, i: usize) -> (bool, bool) {
+        self.lines.iter().find(|r| r.contains(&i)).map_or((false, false), |r| (i == r.start, i + 1 == r.end))
+    }
 }
 
 impl PanelMesh {
-    /// 3D image of a local 2D point.
+    /// 3D image of a local 2D point (turned by the panel's folds).
     pub fn to_3d(&self, p: Vec2) -> Vec3 {
-        self.rotation * Vec3::new(p.x, p.y, 0.0) + self.translation
+        let q = self.folds.iter().fold(Vec3::new(p.x, p.y, 0.0), |q, f| f.turn(p, q));
+        self.rotation * q + self.translation
     }
 
     /// Per-corner texture coordinates of the local vertices: 2D minus the panel's minimum (cm).
@@ -320,36 +400,50 @@ impl BoxMesh {
 
         // Stitches: sides, labels, equal counts.
         let mut edge_stitch: Vec<Vec<Option<usize>>> = specs.iter().map(|p| vec![None; p.edges.len()]).collect();
-        let mut stitches = Vec::with_capacity(pattern.stitches.len());
+        let mut stitches = Vec::with_capacity(pattern.stitches.len() + pattern.inner_stitches.len());
         for (k, s) in pattern.stitches.iter().enumerate() {
-            let mut sides = [(0, 0); 2];
-            for (j, side) in s.sides.iter().enumerate() {
-                let missing = || MeshError::MissingEdge { stitch: k, panel: side.panel.clone(), edge: side.edge };
-                let p = *index.get(side.panel.as_str()).ok_or_else(missing)?;
-                if side.edge >= specs[p].edges.len() {
-                    return Err(missing());
-                }
-                if let Some(first) = edge_stitch[p][side.edge] {
-                    return Err(MeshError::StitchedTwice { panel: side.panel.clone(), edge: side.edge, first, second: k });
-                }
-                edge_stitch[p][side.edge] = Some(k);
-                sides[j] = (p, side.edge);
-            }
-            let la = &specs[sides[0].0].edges[sides[0].1].label;
-            let lb = &specs[sides[1].0].edges[sides[1].1].label;
-            if let (Some(a), Some(b)) = (la, lb)
-                && a != b
-            {
-                return Err(MeshError::LabelMismatch { stitch: k, first: a.clone(), second: b.clone() });
-            }
-            let n = counts[sides[0].0][sides[0].1].max(counts[sides[1].0][sides[1].1]);
-            for (p, e) in sides {
-                counts[p][e] = n;
-            }
-            stitches.push(StitchMesh { sides, right_wrong: s.right_wrong, label: la.clone().or_else(|| lb.clone()), n });
+            let side = |j: usize| (s.sides[j].panel.as_str(), Some(s.sides[j].edge), s.sides[j].edge);
+            join(k, [side(0), side(1)], s.right_wrong, &index, &specs, &mut counts, &mut edge_stitch, &mut stitches)?;
         }
         if let Some(problem) = crate::structural_errors(pattern).into_iter().next() {
             return Err(MeshError::Structural(problem.to_string()));
+        }
+        // The format extension: each panel's holes' and inner lines' edges follow its
+        // outline's (the order of `PanelSpec::all_edges`), stitched by the inner
+        // stitches, which follow the stitches.
+        for (pi, p) in specs.iter().enumerate() {
+            let inner = p.holes.iter().map(|h| (&h.vertices, &h.edges)).chain(p.lines.iter().map(|l| (&l.vertices, &l.edges)));
+            for (vertices, inner_edges) in inner {
+                let own = PanelSpec::new(&p.name, [0.0; 3], [0.0; 3], vertices.clone(), inner_edges.clone(), None);
+                for i in 0..inner_edges.len() {
+                    let c = MeshCurve::of_edge(&own, i);
+                    let len = c.length();
+                    let n = ((c.reference_length() / resolution).ceil() + 1.0).max(2.0);
+                    if !(n.is_finite() && n <= MAX_EDGE_VERTICES as f64) {
+                        let reason = format!("length {len} cm cannot be sampled at {resolution} cm");
+                        return Err(MeshError::BadEdge { panel: p.name.clone(), edge: counts[pi].len(), reason });
+                    }
+                    curves[pi].push((c, len));
+                    counts[pi].push(n as usize);
+                }
+            }
+            edge_stitch[pi].resize(counts[pi].len(), None);
+        }
+        for (j, s) in pattern.inner_stitches.iter().enumerate() {
+            let side = |i: usize| {
+                let sd = &s.sides[i];
+                (sd.panel.as_str(), pattern.panel(&sd.panel).and_then(|p| p.edge_index(sd.place, sd.edge)), sd.edge)
+            };
+            join(
+                pattern.stitches.len() + j,
+                [side(0), side(1)],
+                s.right_wrong,
+                &index,
+                &specs,
+                &mut counts,
+                &mut edge_stitch,
+                &mut stitches,
+            )?;
         }
         check_size(&specs, &counts, resolution)?;
 
@@ -360,15 +454,18 @@ impl BoxMesh {
         for (pi, p) in specs.iter().enumerate() {
             let mut points: Vec<Vec2> = Vec::new();
             let mut seen: HashMap<[u64; 2], usize> = HashMap::default();
-            let mut edges: Vec<EdgeSamples> = vec![EdgeSamples { local: Vec::new(), stitch: None, length: 0.0 }; p.edges.len()];
-            let mut samples: Vec<Vec<Vec2>> = Vec::with_capacity(p.edges.len());
+            let n_all = curves[pi].len();
+            let mut edges: Vec<EdgeSamples> = vec![EdgeSamples { local: Vec::new(), stitch: None, length: 0.0 }; n_all];
+            let mut samples: Vec<Vec<Vec2>> = Vec::with_capacity(n_all);
             for (i, (c, _)) in curves[pi].iter().enumerate() {
                 samples.push(c.samples(counts[pi][i]));
             }
-            let stitched = (0..p.edges.len()).filter(|&i| edge_stitch[pi][i].is_some());
-            let free = (0..p.edges.len()).filter(|&i| edge_stitch[pi][i].is_none());
+            let kinds = EdgeKinds::of(p);
+            let stitched = (0..n_all).filter(|&i| edge_stitch[pi][i].is_some());
+            let free = (0..n_all).filter(|&i| edge_stitch[pi][i].is_none());
             let mut n_stitch_side = 0;
             let n_stitched = stitched.clone().count();
+            let mut outline_ids: Vec<usize> = Vec::new();
             for (visit, i) in stitched.chain(free).enumerate() {
                 let s = &samples[i];
                 let corner = |q: Vec2, points: &mut Vec<Vec2>, seen: &mut HashMap<[u64; 2], usize>| {
@@ -377,14 +474,29 @@ impl BoxMesh {
                         points.len() - 1
                     })
                 };
+                // An inner line's end on the outline is the outline's nearest point (within
+                // half the resolution), so that the line's row of edges meets the outline.
+                let end = |q: Vec2, chain_end: bool, points: &mut Vec<Vec2>, seen: &mut HashMap<[u64; 2], usize>| {
+                    let near = |&k: &usize| (points[k] - q).length();
+                    let snap =
+                        outline_ids.iter().copied().filter(|k| near(k) <= 0.5 * resolution).min_by(|a, b| near(a).total_cmp(&near(b)));
+                    match snap {
+                        Some(k) if chain_end => k,
+                        _ => corner(q, points, seen),
+                    }
+                };
+                let (starts_line, ends_line) = kinds.line_ends(i);
                 let mut local = Vec::with_capacity(s.len());
-                local.push(corner(s[0], &mut points, &mut seen));
+                local.push(end(s[0], starts_line, &mut points, &mut seen));
                 for q in &s[1..s.len() - 1] {
                     seen.entry([q.x.to_bits(), q.y.to_bits()]).or_insert(points.len());
                     local.push(points.len());
                     points.push(*q);
                 }
-                local.push(corner(s[s.len() - 1], &mut points, &mut seen));
+                local.push(end(s[s.len() - 1], ends_line, &mut points, &mut seen));
+                if i < p.edges.len() {
+                    outline_ids.extend(&local);
+                }
                 edges[i] = EdgeSamples { local, stitch: edge_stitch[pi][i], length: curves[pi][i].1 };
                 if visit + 1 == n_stitched {
                     n_stitch_side = points.len();
@@ -400,14 +512,24 @@ impl BoxMesh {
                     reason: format!("too large to mesh at {resolution} cm (over {MAX_MESH_VERTICES} vertices)"),
                 });
             }
-            let segments: Vec<[usize; 2]> = edges.iter().flat_map(|e| e.local.windows(2).map(|w| [w[0], w[1]])).collect();
+            // The outline and the holes bound the panel (a hole's loop runs against the
+            // outline, so that the panel's side of it is the same); inner lines do not.
+            let pairs = |i: usize| edges[i].local.windows(2).map(|w| [w[0], w[1]]);
+            let mut segments: Vec<[usize; 2]> = (0..p.edges.len()).flat_map(pairs).collect();
+            let area = |range: std::ops::Range<usize>| -> f64 { range.flat_map(pairs).map(|[a, b]| points[a].perp_dot(points[b])).sum() };
+            let outline_area = area(0..p.edges.len());
+            for range in kinds.holes.clone() {
+                let against = area(range.clone()) * outline_area < 0.0;
+                segments.extend(range.flat_map(pairs).map(|[a, b]| if against { [a, b] } else { [b, a] }));
+            }
+            let lines: Vec<[usize; 2]> = kinds.lines.iter().flat_map(|r| r.clone().flat_map(pairs)).collect();
             let n_boundary = points.len();
             // A clockwise panel is triangulated mirrored (x → −x, exact) and mirrored back, so
             // that the mesh of a mirrored panel is exactly the mirror of the panel's mesh; the
             // triangles, counter-clockwise in the mirror, come out wound like the outline.
             let mirror = |q: &Vec2| if counter_clockwise { *q } else { Vec2::new(-q.x, q.y) };
             let input: Vec<Vec2> = points.iter().map(mirror).collect();
-            let mut tri = triangulate::triangulate(&input, &segments, resolution, MAX_MESH_VERTICES - vertices)
+            let mut tri = triangulate::triangulate(&input, &segments, &lines, resolution, MAX_MESH_VERTICES - vertices)
                 .map_err(|reason| MeshError::DegeneratePanel { panel: p.name.clone(), reason })?;
             vertices += tri.points.len() - n_boundary;
             if tri.faces.is_empty() {
@@ -432,6 +554,7 @@ impl BoxMesh {
                 counter_clockwise,
                 grain: rotation * Vec3::Y,
                 texture_offset,
+                folds: Fold::of(p),
             });
             texture_offset += n_local;
         }
@@ -510,8 +633,8 @@ impl BoxMesh {
                 vertices.push(panel.to_3d(panel.points[l]));
                 labels.push(VertexLabel::Panel(pi));
             }
-            for (i, e) in panel.edges.iter().enumerate() {
-                if let (None, Some(label)) = (e.stitch, &specs[pi].edges[i].label) {
+            for (e, spec) in panel.edges.iter().zip(specs[pi].all_edges()) {
+                if let (None, Some(label)) = (e.stitch, &spec.label) {
                     let ids = e.local[1..e.local.len() - 1].iter().map(|&l| panel.global[l]);
                     push_label(&mut vertex_labels, label, ids);
                 }
@@ -526,6 +649,34 @@ impl BoxMesh {
                 }
                 faces.push(MeshFace { vertices: g, uvs: f.map(|l| l + panel.texture_offset), panel: pi });
             }
+        }
+        // The format extension's names: each hole's and inner line's vertices, and the
+        // vertices of panels on a facing or lining layer.
+        for (pi, panel) in panels.iter().enumerate() {
+            let spec = specs[pi];
+            let kinds = EdgeKinds::of(spec);
+            let named = spec.holes.iter().map(|h| format!("hole_{}_{}", spec.name, h.name)).zip(&kinds.holes).chain(
+                spec.lines
+                    .iter()
+                    .map(|l| {
+                        format!("{}_{}_{}", if matches!(l.kind, crate::LineKind::Fold { .. }) { "fold" } else { "line" }, spec.name, l.name)
+                    })
+                    .zip(&kinds.lines),
+            );
+            for (name, range) in named {
+                let mut ids: Vec<usize> = range.clone().flat_map(|i| panel.edges[i].local.iter().map(|&l| panel.global[l])).collect();
+                ids.dedup();
+                push_label(&mut vertex_labels, &name, ids);
+            }
+            let layer = match spec.layer {
+                crate::Layer::Outer => continue,
+                crate::Layer::Facing => "layer_facing",
+                crate::Layer::Lining => "layer_lining",
+            };
+            let mut ids: Vec<usize> = panel.global.clone();
+            ids.sort_unstable();
+            ids.dedup();
+            push_label(&mut vertex_labels, layer, ids);
         }
         for (v, label) in labels.iter().enumerate() {
             let VertexLabel::Stitch(ks) = label else { break };
@@ -557,6 +708,46 @@ impl BoxMesh {
             VertexLabel::Panel(p) => self.panels[*p].name.clone(),
         }
     }
+}
+
+/// One stitch `k` between `sides` (panel name, edge index in `PanelSpec::all_edges` if
+/// it exists, edge index to report): checks, records it, gives both edges the larger
+/// vertex count.
+#[allow(clippy::too_many_arguments)]
+fn join(
+    k: usize,
+    sides: [(&str, Option<usize>, usize); 2],
+    right_wrong: bool,
+    index: &HashMap<&str, usize>,
+    specs: &[&PanelSpec],
+    counts: &mut [Vec<usize>],
+    edge_stitch: &mut [Vec<Option<usize>>],
+    stitches: &mut Vec<StitchMesh>,
+) -> Result<(), MeshError> {
+    let mut at = [(0, 0); 2];
+    for (j, &(panel, edge, shown)) in sides.iter().enumerate() {
+        let missing = || MeshError::MissingEdge { stitch: k, panel: panel.to_string(), edge: shown };
+        let p = *index.get(panel).ok_or_else(missing)?;
+        let e = edge.filter(|&e| e < counts[p].len()).ok_or_else(missing)?;
+        if let Some(first) = edge_stitch[p][e] {
+            return Err(MeshError::StitchedTwice { panel: panel.to_string(), edge: shown, first, second: k });
+        }
+        edge_stitch[p][e] = Some(k);
+        at[j] = (p, e);
+    }
+    let label = |(p, e): (usize, usize)| specs[p].all_edges().nth(e).and_then(|x| x.label.clone());
+    let (la, lb) = (label(at[0]), label(at[1]));
+    if let (Some(a), Some(b)) = (&la, &lb)
+        && a != b
+    {
+        return Err(MeshError::LabelMismatch { stitch: k, first: a.clone(), second: b.clone() });
+    }
+    let n = counts[at[0].0][at[0].1].max(counts[at[1].0][at[1].1]);
+    for (p, e) in at {
+        counts[p][e] = n;
+    }
+    stitches.push(StitchMesh { sides: at, right_wrong, label: la.or(lb), n });
+    Ok(())
 }
 
 fn push_label(labels: &mut Vec<(String, Vec<usize>)>, label: &str, ids: impl IntoIterator<Item = usize>) {
@@ -696,11 +887,12 @@ fn to_cm(pattern: &Pattern) -> Pattern {
     let s = 100.0 / pattern.properties.units_in_meter;
     let mut p = pattern.clone();
     for panel in &mut p.panels {
-        for v in &mut panel.vertices {
+        let inner = panel.holes.iter_mut().flat_map(|h| &mut h.vertices).chain(panel.lines.iter_mut().flat_map(|l| &mut l.vertices));
+        for v in panel.vertices.iter_mut().chain(inner) {
             *v = [v[0] * s, v[1] * s];
         }
         panel.translation = panel.translation.map(|t| t * s);
-        for e in &mut panel.edges {
+        for e in panel.all_edges_mut() {
             if let Some(crate::Curvature::Circle { radius, .. }) = &mut e.curvature {
                 *radius *= s;
             }

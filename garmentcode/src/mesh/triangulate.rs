@@ -62,16 +62,24 @@ pub(crate) struct PanelTriangulation {
     pub faces: Vec<[usize; 3]>,
 }
 
-/// Triangulates the region bounded by `segments` between `boundary` points.
-/// At most `max_interior` lattice points are laid out (an error past that).
-pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, max_interior: usize) -> Result<PanelTriangulation, String> {
+/// Triangulates the region bounded by `segments` between `boundary` points, with the
+/// open `lines` between them (inner lines of the format extension) as rows of edges
+/// inside it that bound nothing. At most `max_interior` lattice points are laid out (an
+/// error past that).
+pub(crate) fn triangulate(
+    boundary: &[Vec2],
+    segments: &[[usize; 2]],
+    lines: &[[usize; 2]],
+    res: f64,
+    max_interior: usize,
+) -> Result<PanelTriangulation, String> {
     let max_len = SIZE_BOUND * res;
     // A resolution beyond the panel's size lays out points as for the panel's size (no
     // lattice, a row within the panel's reach), never at astronomical distances.
     let (lo, hi) =
         boundary.iter().fold((Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY)), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
     let layout_res = res.min((hi - lo).length());
-    let (row, lattice) = interior_points(boundary, segments, layout_res, max_interior)?;
+    let (row, lattice) = interior_points(boundary, segments, lines, layout_res, max_interior)?;
     // The lattice's own triangles are kept as they are; the Delaunay triangulation only
     // fills the strip between the outline and them (the outline, the row, the lattice
     // points on the strip's inner border or in no lattice triangle), with the border's
@@ -93,7 +101,7 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, 
         }
     }
     let n_bulk = all.len();
-    let mut edges: Vec<[usize; 2]> = segments.iter().copied().filter(|[a, b]| a != b).collect();
+    let mut edges: Vec<[usize; 2]> = segments.iter().chain(lines).copied().filter(|[a, b]| a != b).collect();
     edges.extend(border.iter().map(|e| e.map(|i| cdt_index[i])));
     let mut conflicts = false;
     let bulk = Cdt::try_bulk_load_cdt(all, edges, |_| conflicts = true).map_err(|e| format!("panel cannot be triangulated: {e:?}"))?;
@@ -108,7 +116,8 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, 
         for p in &nudged {
             handle.push(cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("point ({}, {}) cannot be triangulated: {e:?}", p.x, p.y))?);
         }
-        let crossing = add_outline(&mut cdt, &handle, segments);
+        let all: Vec<[usize; 2]> = segments.iter().chain(lines).copied().collect();
+        let crossing = add_outline(&mut cdt, &handle, &all);
         for p in row.iter().chain(&lattice.points) {
             cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("interior point cannot be inserted: {e:?}"))?;
         }
@@ -118,7 +127,15 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, 
 
     // Split inside edges longer than the size bound (never outline edges) at their midpoints.
     let budget = cdt.num_vertices() + 4 * boundary.len() + 1000;
-    let mut inside = inside_faces(&cdt);
+    // The lines' constraints, which bound nothing (spade vertex indices, low first).
+    let line_edges: std::collections::HashSet<[usize; 2]> = lines
+        .iter()
+        .map(|&[a, b]| {
+            let (x, y) = (handle[a], handle[b]);
+            [x.min(y), x.max(y)]
+        })
+        .collect();
+    let mut inside = inside_faces(&cdt, &line_edges);
     for _ in 0..8 {
         let mut splits: Vec<Point2<f64>> = Vec::new();
         for f in &inside {
@@ -143,7 +160,7 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, 
         for p in splits {
             cdt.insert(p).map_err(|e| format!("refinement point cannot be inserted: {e:?}"))?;
         }
-        inside = inside_faces(&cdt);
+        inside = inside_faces(&cdt, &line_edges);
     }
 
     // Spade vertex index → output index: boundary vertices keep theirs, added vertices
@@ -201,7 +218,13 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, 
 /// The interior points: a row along the outline, one point over the middle of each
 /// outline segment at [`ROW_HEIGHT`]`·res` (so the triangles on the outline are about
 /// isosceles, as a quality mesher makes them), and the lattice inside that row.
-fn interior_points(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, max_interior: usize) -> Result<(Vec<Vec2>, Lattice), String> {
+fn interior_points(
+    boundary: &[Vec2],
+    segments: &[[usize; 2]],
+    lines: &[[usize; 2]],
+    res: f64,
+    max_interior: usize,
+) -> Result<(Vec<Vec2>, Lattice), String> {
     let (mut lo, mut hi) = (Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY));
     for p in boundary {
         lo = lo.min(*p);
@@ -209,7 +232,9 @@ fn interior_points(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, max_int
     }
     let t = ROW_HEIGHT * res;
     let clearance = t + BOUNDARY_CLEARANCE * res;
-    let near = SegmentGrid::new(boundary, segments, lo, hi, clearance);
+    // Row and lattice keep clear of the lines as of the outline.
+    let all: Vec<[usize; 2]> = segments.iter().chain(lines).copied().collect();
+    let near = SegmentGrid::new(boundary, &all, lo, hi, clearance);
     let mut grid = PointGrid::new(lo, hi, ROW_SPACING * res);
     let mut row = Vec::new();
     // Inside is on the left of a counter-clockwise outline (positive area), else on the
@@ -445,15 +470,20 @@ fn add_outline(cdt: &mut Cdt, handle: &[spade::handles::FixedVertexHandle], segm
 }
 
 /// Inner faces inside the outline by the even–odd rule: a face's level is the number of
-/// constraints crossed on the way from the outer face; odd levels are inside.
-fn inside_faces(cdt: &Cdt) -> Vec<FixedFaceHandle<InnerTag>> {
+/// constraints crossed on the way from the outer face (not counting `lines`, which
+/// bound nothing); odd levels are inside.
+fn inside_faces(cdt: &Cdt, lines: &std::collections::HashSet<[usize; 2]>) -> Vec<FixedFaceHandle<InnerTag>> {
+    let bounds = |e: spade::handles::DirectedEdgeHandle<_, _, _, _>| {
+        let (a, b) = (e.from().fix().index(), e.to().fix().index());
+        e.is_constraint_edge() && (lines.is_empty() || !lines.contains(&[a.min(b), a.max(b)]))
+    };
     let n = cdt.num_all_faces();
     let mut parity: Vec<Option<bool>> = vec![None; n];
     let mut queue = VecDeque::new();
     for e in cdt.convex_hull() {
         for d in [e, e.rev()] {
             if let Some(f) = d.face().as_inner() {
-                let odd = d.is_constraint_edge();
+                let odd = bounds(d);
                 if parity[f.fix().index()].is_none() {
                     parity[f.fix().index()] = Some(odd);
                     queue.push_back(f.fix());
@@ -466,7 +496,7 @@ fn inside_faces(cdt: &Cdt) -> Vec<FixedFaceHandle<InnerTag>> {
         for e in cdt.face(f).adjacent_edges() {
             if let Some(g) = e.rev().face().as_inner() {
                 if parity[g.fix().index()].is_none() {
-                    parity[g.fix().index()] = Some(odd ^ e.is_constraint_edge());
+                    parity[g.fix().index()] = Some(odd ^ bounds(e));
                     queue.push_back(g.fix());
                 }
             }
@@ -552,7 +582,7 @@ mod tests {
     #[test]
     fn square_is_covered_with_short_edges() {
         let (pts, segs) = square(10, 10.0);
-        let t = triangulate(&pts, &segs, 1.0, 1000).unwrap();
+        let t = triangulate(&pts, &segs, &[], 1.0, 1000).unwrap();
         let area: f64 = t.faces.iter().map(|f| (t.points[f[1]] - t.points[f[0]]).perp_dot(t.points[f[2]] - t.points[f[0]]) / 2.0).sum();
         assert!((area - 100.0).abs() < 1e-9, "{area}");
         for f in &t.faces {

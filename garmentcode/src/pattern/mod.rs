@@ -177,7 +177,20 @@ impl Pattern {
             if let Some(i) = p.vertices.iter().position(|v| bad(v)) {
                 return Some(format!("panel '{}' vertex {i}", p.name));
             }
-            for (i, e) in p.edges.iter().enumerate() {
+            for (h, hole) in p.holes.iter().enumerate() {
+                if let Some(i) = hole.vertices.iter().position(|v| bad(v)) {
+                    return Some(format!("panel '{}' hole {h} vertex {i}", p.name));
+                }
+            }
+            for (l, line) in p.lines.iter().enumerate() {
+                if let Some(i) = line.vertices.iter().position(|v| bad(v)) {
+                    return Some(format!("panel '{}' line {l} vertex {i}", p.name));
+                }
+                if matches!(line.kind, LineKind::Fold { angle } if !angle.is_finite()) {
+                    return Some(format!("panel '{}' line {l} fold angle", p.name));
+                }
+            }
+            for (i, e) in p.all_edges().enumerate() {
                 let finite = match &e.curvature {
                     None => true,
                     Some(Curvature::Quadratic(c)) => !bad(c),
@@ -185,7 +198,7 @@ impl Pattern {
                     Some(Curvature::Circle { radius, .. }) => radius.is_finite(),
                 };
                 if !finite {
-                    return Some(format!("panel '{}' edge {i} curvature", p.name));
+                    return Some(format!("panel '{}' {} curvature", p.name, p.edge_path(i)));
                 }
             }
         }
@@ -259,17 +272,7 @@ impl PanelSpec {
 
     /// Geometry of edge `i` (indices must be valid: see [`validate`](crate::validate)).
     pub fn edge_geom(&self, i: usize) -> Edge {
-        let e = &self.edges[i];
-        let (s, t) = (self.vertex(e.endpoints[0]), self.vertex(e.endpoints[1]));
-        let curve = match &e.curvature {
-            None => Curve::Line,
-            Some(Curvature::Quadratic(c)) => Curve::Quadratic(Vec2::from(*c)),
-            Some(Curvature::Cubic(c1, c2)) => Curve::Cubic(Vec2::from(*c1), Vec2::from(*c2)),
-            Some(Curvature::Circle { radius, large_arc, right }) => {
-                Curve::Arc { cy: arc::cy_from_radius(s, t, *radius, *large_arc, *right) }
-            }
-        };
-        Edge { start: s, end: t, curve }
+        edge_geometry(&self.vertices, &self.edges[i])
     }
 
     /// The outline as a polygon, relative to the first edge's start: each edge's start
@@ -315,4 +318,17 @@ impl PanelSpec {
             })
             .collect()
     }
+}
+
+/// Geometry of `e` over `vertices` (an outline's, a hole's or an inner line's; the
+/// indices must be valid).
+pub(crate) fn edge_geometry(vertices: &[[f64; 2]], e: &EdgeSpec) -> Edge {
+    let (s, t) = (Vec2::from(vertices[e.endpoints[0]]), Vec2::from(vertices[e.endpoints[1]]));
+    let curve = match &e.curvature {
+        None => Curve::Line,
+        Some(Curvature::Quadratic(c)) => Curve::Quadratic(Vec2::from(*c)),
+        Some(Curvature::Cubic(c1, c2)) => Curve::Cubic(Vec2::from(*c1), Vec2::from(*c2)),
+        Some(Curvature::Circle { radius, large_arc, right }) => Curve::Arc { cy: arc::cy_from_radius(s, t, *radius, *large_arc, *right) },
+    };
+    Edge { start: s, end: t, curve }
 }

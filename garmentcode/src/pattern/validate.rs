@@ -2,7 +2,9 @@
 //! about things a pattern maker should look at (crossing outlines, seams whose two
 //! sides differ in length).
 
-use super::Pattern;
+mod inner;
+
+use super::{EdgePlace, LineKind, Pattern};
 use crate::intersect;
 use std::collections::HashMap;
 use std::fmt;
@@ -44,6 +46,20 @@ pub enum ProblemKind {
     SelfIntersection,
     /// The two edges of a stitch have different lengths (a gather, or a mistake).
     StitchLengthMismatch,
+    /// A hole (format extension) lies outside its panel's outline.
+    HoleOutsidePanel,
+    /// A hole crosses or touches its panel's outline, another hole, or itself.
+    HoleCrossing,
+    /// An inner line leaves its panel.
+    LineOutsidePanel,
+    /// A fold line whose ends are not both on the panel's outline.
+    FoldNotAcross,
+    /// A fold angle outside 0 to 180 degrees.
+    FoldAngleOutOfRange,
+    /// Two holes or lines of a panel with the same name.
+    DuplicateName,
+    /// An inner stitch names a hole or line that does not exist.
+    UnknownHoleOrLine,
 }
 
 impl ProblemKind {
@@ -62,6 +78,13 @@ impl ProblemKind {
             ProblemKind::PanelOrderMismatch => "panel_order_mismatch",
             ProblemKind::SelfIntersection => "self_intersection",
             ProblemKind::StitchLengthMismatch => "stitch_length_mismatch",
+            ProblemKind::HoleOutsidePanel => "hole_outside_panel",
+            ProblemKind::HoleCrossing => "hole_crossing",
+            ProblemKind::LineOutsidePanel => "line_outside_panel",
+            ProblemKind::FoldNotAcross => "fold_not_across",
+            ProblemKind::FoldAngleOutOfRange => "fold_angle_out_of_range",
+            ProblemKind::DuplicateName => "duplicate_name",
+            ProblemKind::UnknownHoleOrLine => "unknown_hole_or_line",
         }
     }
 }
@@ -244,9 +267,10 @@ fn structure(p: &Pattern) -> (Vec<Problem>, HashMap<&str, bool>) {
             out.push(err(ProblemKind::ZeroArea, Some(name), None, None, "the outline encloses no area".into()));
             ok = false;
         }
+        inner::check_panel(panel, ok, &mut |kind, message| out.push(err(kind, Some(name), None, None, message)));
         structurally_ok.insert(name, ok);
     }
-    let mut used: HashMap<(&str, usize), usize> = HashMap::new();
+    let mut used: HashMap<(&str, EdgePlace, usize), String> = HashMap::new();
     for (si, s) in p.stitches.iter().enumerate() {
         for side in &s.sides {
             match p.panel(&side.panel) {
@@ -261,13 +285,59 @@ fn structure(p: &Pattern) -> (Vec<Problem>, HashMap<&str, bool>) {
                     format!("the panel has {} edges", panel.edges.len()),
                 )),
                 Some(_) => {
-                    if let Some(first) = used.insert((side.panel.as_str(), side.edge), si) {
+                    if let Some(first) = used.insert((side.panel.as_str(), EdgePlace::Outline, side.edge), format!("stitch {si}")) {
                         out.push(err(
                             ProblemKind::EdgeStitchedTwice,
                             Some(&side.panel),
                             Some(side.edge),
                             Some(si),
-                            format!("already used by stitch {first}"),
+                            format!("already used by {first}"),
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    for (si, s) in p.inner_stitches.iter().enumerate() {
+        for side in &s.sides {
+            let at = |what: &str| format!("inner stitch {si}: {what}");
+            let Some(panel) = p.panel(&side.panel) else {
+                out.push(err(ProblemKind::UnknownPanel, Some(&side.panel), None, None, at("no panel with this name")));
+                continue;
+            };
+            let (n_edges, place) = match side.place {
+                EdgePlace::Outline => (Some(panel.edges.len()), "the outline".to_string()),
+                EdgePlace::Hole(h) => (panel.holes.get(h).map(|x| x.edges.len()), format!("hole {h}")),
+                EdgePlace::Line(l) => (panel.lines.get(l).map(|x| x.edges.len()), format!("line {l}")),
+            };
+            match n_edges {
+                None => out.push(err(
+                    ProblemKind::UnknownHoleOrLine,
+                    Some(&side.panel),
+                    None,
+                    None,
+                    at(&format!("{place} does not exist (the panel has {} holes and {} lines)", panel.holes.len(), panel.lines.len())),
+                )),
+                Some(n) if side.edge >= n => out.push(err(
+                    ProblemKind::EdgeOutOfRange,
+                    Some(&side.panel),
+                    None,
+                    None,
+                    at(&format!("edge {} of {place} does not exist (it has {n} edges)", side.edge)),
+                )),
+                Some(_) => {
+                    // Placement lines carry a piece sewn on top and may hold more than one
+                    // stitch per edge (a pocket and its flap); other edges are sewn once.
+                    let shared = matches!(side.place, EdgePlace::Line(l) if panel.lines[l].kind == LineKind::Placement);
+                    let first =
+                        if shared { None } else { used.insert((side.panel.as_str(), side.place, side.edge), format!("inner stitch {si}")) };
+                    if let Some(first) = first {
+                        out.push(err(
+                            ProblemKind::EdgeStitchedTwice,
+                            Some(&side.panel),
+                            None,
+                            None,
+                            at(&format!("edge {} of {place} is already used by {first}", side.edge)),
                         ));
                     }
                 }
