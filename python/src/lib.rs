@@ -771,6 +771,26 @@ impl PyPattern {
             .collect()
     }
 
+    /// Stitches with a side on a hole or an inner line (the format extension,
+    /// `docs/pattern-extension.md`), as `(side, side)` dicts the way the file writes
+    /// them: `{"panel": "front", "hole": 0, "edge": 2}`, `"line"` for an inner line,
+    /// neither for the outline.
+    #[getter]
+    fn inner_stitches<'py>(&self, py: Python<'py>) -> PyResult<Vec<(Bound<'py, PyDict>, Bound<'py, PyDict>)>> {
+        let side = |s: &garmentcode::InnerSide| -> PyResult<Bound<'py, PyDict>> {
+            let d = PyDict::new(py);
+            d.set_item("panel", &s.panel)?;
+            match s.place {
+                garmentcode::EdgePlace::Outline => {}
+                garmentcode::EdgePlace::Hole(k) => d.set_item("hole", k)?,
+                garmentcode::EdgePlace::Line(k) => d.set_item("line", k)?,
+            }
+            d.set_item("edge", s.edge)?;
+            Ok(d)
+        };
+        self.pattern.inner_stitches.iter().map(|s| Ok((side(&s.sides[0])?, side(&s.sides[1])?))).collect()
+    }
+
     /// The design it was built from, `{path: value}` (`None` if read from a file).
     #[getter]
     fn design<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {

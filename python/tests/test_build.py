@@ -202,3 +202,25 @@ def test_a_body_may_give_a_few_measurements_over_a_built_in_body(tmp_path):
     bad.write_text("body:\n  base: mean_female\n  wasit: 70.0\n")
     with pytest.raises(gc.BodyError, match=r"bad\.yaml: line 3: body\.wasit: unknown measurement \(did you mean `waist`\?\)"):
         gc.Body(bad)
+
+
+def test_the_format_extension_reads_draws_and_meshes():
+    # A pattern with a diamond dart, a keyhole, a pocket sewn onto a placement line, a
+    # facing, a fold line and pleat lines (docs/pattern-extension.md).
+    path = REPO / "garmentcode" / "tests" / "data" / "extension" / "specification.json"
+    pattern = gc.Pattern.from_json(path)
+    spec = pattern.spec
+    assert spec["properties"]["extension_version"] == 1
+    front = spec["pattern"]["panels"]["front"]
+    assert [h["kind"] for h in front["holes"]] == ["dart", "cut"]
+    assert gc.Pattern.from_json(pattern.to_json()).to_json() == pattern.to_json()
+    sides = pattern.inner_stitches
+    assert sides and all(set(a) >= {"panel", "edge"} and set(b) >= {"panel", "edge"} for a, b in sides)
+    assert any("hole" in a and "hole" in b for a, b in sides), "the dart's sides are sewn together"
+    assert any("line" in a or "line" in b for a, b in sides), "the pocket is sewn onto its placement line"
+    assert pattern.problems() == []
+    assert "fold" in pattern.svg()
+    mesh = pattern.mesh(resolution=1.0)
+    assert len(mesh.stitch_pairs) == len(pattern.stitches) + len(sides)
+    labels = set(mesh.files()[f"{pattern.name}_vertex_labels.yaml"].decode().split())
+    assert any(label.startswith("fold_") for label in labels)
