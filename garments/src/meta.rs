@@ -11,7 +11,7 @@ use crate::shared::{BottomOptions, Fit, SkirtGroups, Symmetry};
 use crate::skirt_levels::SkirtLevels;
 use crate::skirt_paneled::{PencilSkirt, Skirt2, SkirtManyPanels};
 use garmentcode::slots::{Bottom, Top};
-use garmentcode::{Align, Arena, Body, Component, InterfaceId, PartExt, Result, SlotExt, StitchRule};
+use garmentcode::{Align, Arena, Body, Component, InterfaceId, PanelId, PartExt, Result, SlotExt, StitchRule};
 
 /// The bottom garment of a design: one of the library's skirts or the pants. Each
 /// exposes a `top` to sew to the waist.
@@ -62,6 +62,9 @@ pub struct MetaGarment {
     /// Bottom garment.
     #[part]
     pub lower: Option<BottomGarment>,
+    /// Pieces sewn on top (patch pockets: `design.extension`).
+    #[part]
+    pub pockets: Vec<PanelId>,
     /// Upper to band to bottom.
     #[stitches]
     pub stitches: Vec<StitchRule>,
@@ -121,7 +124,8 @@ impl MetaGarment {
             }
             lower.set_panel_label(a, "leg", false);
         }
-        Ok(MetaGarment { upper, belt, lower, stitches })
+        let pockets = crate::extension::apply(a, &design.extension, upper.as_ref(), lower.as_ref())?;
+        Ok(MetaGarment { upper, belt, lower, pockets, stitches })
     }
 
     /// Total length: upper + band + bottom, as the reference measures it.
@@ -131,7 +135,7 @@ impl MetaGarment {
 }
 
 fn build_bottom(a: &mut Arena, body: &Body, design: &Design, kind: BottomKind, rise: Option<f64>) -> Result<BottomGarment> {
-    let opts = BottomOptions::at_rise(rise);
+    let opts = BottomOptions { pleats: crate::extension::pleating(&design.extension), ..BottomOptions::at_rise(rise) };
     let skirts = SkirtGroups::of(design);
     Ok(match kind {
         BottomKind::SkirtCircle => SkirtCircle::new(a, body, &design.flare_skirt, Symmetry::Symmetric, &opts)?.into(),

@@ -64,6 +64,8 @@ pub struct BottomOptions {
     pub without_slits: bool,
     /// Leave out the waist gathers (the lower tiers of a tiered skirt).
     pub without_gathers: bool,
+    /// Pleats at the waist of a two-panel skirt (`design.extension.pleats`).
+    pub pleats: Option<crate::skirt_paneled::Pleating>,
 }
 
 impl BottomOptions {

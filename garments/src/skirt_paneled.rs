@@ -6,6 +6,7 @@ use crate::design::{self, SideCut};
 use crate::shapes;
 use crate::shared::{BottomOptions, Darts, GatherTo};
 use garmentcode::curves::quadratic_from_tangents;
+use garmentcode::inner::PleatKind;
 use garmentcode::math::close_enough;
 use garmentcode::ops::{Cut, DartSize, EdgeSide, ShapeOrder, cut_into_edge, cut_many_into_edge, dart_shape, distribute_y, side_with_cut};
 use garmentcode::{
@@ -41,9 +42,30 @@ pub struct SkirtPanel {
     pub bottom: InterfaceId,
 }
 
+/// Pleats laid into a skirt panel's waist (see [`garmentcode::inner::pleats`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pleating {
+    /// Knife or box pleats.
+    pub kind: PleatKind,
+    /// How many on the panel.
+    pub count: usize,
+    /// Depth of each fold, cm.
+    pub depth: f64,
+}
+
+impl Pleating {
+    /// Waist width the pleats take in.
+    pub fn intake(&self) -> f64 {
+        let folds = if self.kind == PleatKind::Box { 2.0 } else { 1.0 };
+        self.count as f64 * 2.0 * folds * self.depth
+    }
+}
+
 impl SkirtPanel {
     /// Trapezoid of waist `waist_length·ruffles` widened by `flare` per side at the
-    /// hem; the waist gathered to `gather.top` (or by `ruffles` when not set).
+    /// hem; the waist gathered to `gather.top` (or by `ruffles` when not set). With
+    /// `pleats`, the waist is wider by what they take in and they are laid into it,
+    /// so that its flat parts are `waist_length·ruffles` long.
     pub fn new(
         a: &mut Arena,
         name: &str,
@@ -53,8 +75,9 @@ impl SkirtPanel {
         gather: GatherTo,
         bottom_cut: f64,
         flare: f64,
+        pleats: Option<Pleating>,
     ) -> Result<SkirtPanel> {
-        let top_width = waist_length * ruffles;
+        let top_width = waist_length * ruffles + pleats.map_or(0.0, |p| p.intake());
         let low_width = top_width + 2.0 * flare;
         let x_shift_top = (low_width - top_width) / 2.0;
         let origin = a.vertex(v2(0.0, 0.0));
@@ -79,8 +102,15 @@ impl SkirtPanel {
         edges.push(bottom);
         let panel = a.panel_with_edges(name, edges);
         let r = a.interface(panel, right.last_edge());
+        let waist = match pleats {
+            None => EdgeSeq::from(waist),
+            Some(p) => {
+                let mark = (length / 3.0).min(20.0);
+                garmentcode::inner::pleats(a, &panel, "waist", waist, p.count, p.depth, p.kind, mark)?.flat
+            }
+        };
         let ruffle = match gather.top {
-            Some(m) => a.edge_length(waist) / m,
+            Some(m) => waist.length(a) / m,
             None => ruffles,
         };
         let top = a.interface_gathered(panel, waist, ruffle)?.reverse(a, true);
@@ -564,10 +594,20 @@ impl Skirt2 {
             GatherTo::top(body.waist - body.waist_back_width),
             bottom_cut,
             flare,
+            opts.pleats,
         )?;
         front.panel.translate_to(a, v3(0.0, waist_level, 25.0));
-        let back =
-            SkirtPanel::new(a, &name("skirt_back"), back_waist, length, ruffles, GatherTo::top(body.waist_back_width), bottom_cut, flare)?;
+        let back = SkirtPanel::new(
+            a,
+            &name("skirt_back"),
+            back_waist,
+            length,
+            ruffles,
+            GatherTo::top(body.waist_back_width),
+            bottom_cut,
+            flare,
+            opts.pleats,
+        )?;
         back.panel.translate_to(a, v3(0.0, waist_level, -20.0));
         let stitches = vec![StitchRule::new(a, front.right, back.right)?, StitchRule::new(a, front.left, back.left)?];
         let top = a.interface_from(&[front.top, back.top]);

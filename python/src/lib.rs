@@ -426,7 +426,7 @@ impl PyDesignSpace {
     #[pyo3(signature = (path = None))]
     fn new(path: Option<&Bound<'_, PyAny>>) -> PyResult<PyDesignSpace> {
         let source = path.map(path_or_str).transpose()?;
-        let (space, _) = sample_cmd::load_space(source.as_deref()).map_err(|e| DesignError::new_err(cli_message(e)))?;
+        let (space, _) = sample_cmd::load_space(source.as_deref(), false).map_err(|e| DesignError::new_err(cli_message(e)))?;
         Ok(PyDesignSpace { space, source })
     }
 
@@ -1191,6 +1191,7 @@ fn sample_dataset(
         seed: Some(seed),
         out: out.clone(),
         design_space,
+        extended: false,
         bodies: bodies_arg(bodies)?,
         jobs,
         shard: shard.map(|(i, k)| format!("{i}/{k}")),
