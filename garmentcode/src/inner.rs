@@ -419,8 +419,9 @@ pub enum PleatDirection {
 pub enum PleatKind {
     /// One fold per pleat, all laid the same way; takes twice its depth of edge.
     Knife(PleatDirection),
-    /// Two folds per pleat laid toward each other; takes four times its depth.
-    Box,
+    /// A box pleat: two folds per pleat laid toward each other; takes four times
+    /// its depth.
+    BoxPleat,
 }
 
 /// Pleats laid into an edge by [`pleats`].
@@ -475,7 +476,7 @@ pub fn pleats<P: PanelPart>(
     positive("a pleat's length", length)?;
     let panel = panel.panel_id();
     let total = a.edge_length(edge);
-    let folds_per_pleat = if kind == PleatKind::Box { 2 } else { 1 };
+    let folds_per_pleat = if kind == PleatKind::BoxPleat { 2 } else { 1 };
     let width = 2.0 * depth * folds_per_pleat as f64;
     if count == 0 || count as f64 * width >= total {
         return Err(Error::Design(format!(
@@ -523,7 +524,7 @@ pub fn pleats<P: PanelPart>(
         let marks: Vec<(f64, LineKind)> = match kind {
             PleatKind::Knife(PleatDirection::Forward) => vec![(at(0), LineKind::PleatFold), (at(2), LineKind::PleatPlacement)],
             PleatKind::Knife(PleatDirection::Backward) => vec![(at(0), LineKind::PleatPlacement), (at(2), LineKind::PleatFold)],
-            PleatKind::Box => vec![(at(0), LineKind::PleatFold), (at(2), LineKind::PleatPlacement), (at(4), LineKind::PleatFold)],
+            PleatKind::BoxPleat => vec![(at(0), LineKind::PleatFold), (at(2), LineKind::PleatPlacement), (at(4), LineKind::PleatFold)],
         };
         for (k, (s, kind)) in marks.into_iter().enumerate() {
             let t = geom.inverse_length(s).unwrap_or(0.5);

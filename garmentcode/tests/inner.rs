@@ -202,13 +202,13 @@ fn knife_pleats_leave_the_folded_width_to_stitch() {
 fn box_pleats_fold_toward_each_other_and_too_many_are_refused() {
     let mut a = Arena::new();
     let (skirt, e) = rect(&mut a, "skirt", 60.0, 50.0);
-    let laid = pleats(&mut a, &skirt, "waist", e[1], 2, 3.0, PleatKind::Box, 10.0).unwrap();
+    let laid = pleats(&mut a, &skirt, "waist", e[1], 2, 3.0, PleatKind::BoxPleat, 10.0).unwrap();
     assert_eq!((laid.stitches.len(), laid.lines.len()), (4, 6));
     assert!((laid.flat.length(&a) - 36.0).abs() < 1e-9);
     let kinds: Vec<LineKind> = laid.lines.iter().map(|l| skirt.line_kind(&a, l.index)).collect();
     assert_eq!(kinds[..3], [LineKind::PleatFold, LineKind::PleatPlacement, LineKind::PleatFold]);
     let (other, o) = rect(&mut a, "other", 20.0, 50.0);
-    let err = pleats(&mut a, &other, "waist", o[1], 3, 2.0, PleatKind::Box, 10.0).unwrap_err().to_string();
+    let err = pleats(&mut a, &other, "waist", o[1], 3, 2.0, PleatKind::BoxPleat, 10.0).unwrap_err().to_string();
     assert!(err.contains("do not fit an edge of 20.00 cm in panel 'other': 1 to 2 fit"), "{err}");
 }
 

@@ -1,7 +1,7 @@
 //! Built-in bodies and named designs, embedded in the binary.
 
 use garmentcode::io::read_design;
-use garmentcode::{Body, BodyError, Params};
+use garmentcode::{Body, BodyError};
 
 use crate::Design;
 

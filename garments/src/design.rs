@@ -231,10 +231,10 @@ pub struct Pockets {
 /// Pleat styles.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Choice)]
 pub enum PleatStyle {
-    /// Knife pleats, all folded toward the side seam.
-    Knife,
+    /// Knife pleats, all folded the same way.
+    KnifePleats,
     /// Box pleats.
-    Box,
+    BoxPleats,
 }
 
 /// Waist pleats of two-panel skirts (the panel is widened by what they take in).

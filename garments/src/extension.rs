@@ -20,8 +20,8 @@ const POCKET_HEIGHT: f64 = 1.15;
 /// The pleats a two-panel skirt lays into its waist, if any.
 pub fn pleating(ext: &Extension) -> Option<Pleating> {
     let kind = match ext.pleats.style? {
-        PleatStyle::Knife => PleatKind::Knife(PleatDirection::Forward),
-        PleatStyle::Box => PleatKind::Box,
+        PleatStyle::KnifePleats => PleatKind::Knife(PleatDirection::Forward),
+        PleatStyle::BoxPleats => PleatKind::BoxPleat,
     };
     Some(Pleating { kind, count: ext.pleats.count.max(1) as usize, depth: ext.pleats.depth })
 }

@@ -11,7 +11,7 @@ use crate::shared::{BottomOptions, Fit, SkirtGroups, Symmetry};
 use crate::skirt_levels::SkirtLevels;
 use crate::skirt_paneled::{PencilSkirt, Skirt2, SkirtManyPanels};
 use garmentcode::slots::{Bottom, Top};
-use garmentcode::{Align, Arena, Body, Component, InterfaceId, PanelId, PartExt, Result, SlotExt, StitchRule};
+use garmentcode::{Align, Arena, Body, Component, InterfaceId, PanelId, Part, PartExt, Result, SlotExt, StitchRule};
 
 /// The bottom garment of a design: one of the library's skirts or the pants. Each
 /// exposes a `top` to sew to the waist.
@@ -51,7 +51,7 @@ impl BottomGarment {
 
 /// A complete garment.
 #[derive(Component)]
-#[component(name = "MetaGarment")]
+#[component(name = "MetaGarment", length = Self::garment_length)]
 pub struct MetaGarment {
     /// Upper garment.
     #[part]
@@ -131,6 +131,20 @@ impl MetaGarment {
     /// Total length: upper + band + bottom, as the reference measures it.
     pub fn total_length(&self, a: &Arena) -> f64 {
         Component::length(self, a)
+    }
+
+    /// The parts' lengths summed, pieces sewn on top (pockets) left out.
+    fn garment_length(&self, a: &Arena) -> f64 {
+        let mut total = 0.0;
+        let parts: [Option<&dyn Part>; 3] = [
+            self.upper.as_ref().map(|p| p as &dyn Part),
+            self.belt.as_ref().map(|p| p as &dyn Part),
+            self.lower.as_ref().map(|p| p as &dyn Part),
+        ];
+        for p in parts.into_iter().flatten() {
+            total += p.node().length(a);
+        }
+        total
     }
 }
 

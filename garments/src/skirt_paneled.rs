@@ -56,7 +56,7 @@ pub struct Pleating {
 impl Pleating {
     /// Waist width the pleats take in.
     pub fn intake(&self) -> f64 {
-        let folds = if self.kind == PleatKind::Box { 2.0 } else { 1.0 };
+        let folds = if self.kind == PleatKind::BoxPleat { 2.0 } else { 1.0 };
         self.count as f64 * 2.0 * folds * self.depth
     }
 }
