@@ -875,3 +875,18 @@ fn guide_writes_the_measuring_guide_for_a_body() {
     assert_eq!(code(&run(&["guide", "--out", "g"], &dir)), 0);
     assert!(std::fs::read_to_string(dir.join("g/measuring-guide.html")).unwrap().contains("drawn on mean_all"));
 }
+
+#[test]
+fn the_designs_past_the_reference_build_and_write_their_extension() {
+    let dir = scratch("extension_designs");
+    for design in ["birch-dress", "pleated-skirt", "pocket-shirt"] {
+        let o = run(&["build", "--design", design, "-o", design, "--no-png"], &dir);
+        assert_eq!(code(&o), 0, "{design}: {}", stderr(&o));
+        let written = std::fs::read_to_string(dir.join(design).join("design_params.yaml")).unwrap();
+        assert!(written.contains("extension:"), "{design}: the design is written with its extension");
+    }
+    // A design within the reference's space is written without it.
+    let o = run(&["build", "--design", "t-shirt", "-o", "t-shirt", "--no-png"], &dir);
+    assert_eq!(code(&o), 0);
+    assert!(!std::fs::read_to_string(dir.join("t-shirt/design_params.yaml")).unwrap().contains("extension"));
+}

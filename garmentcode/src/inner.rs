@@ -93,6 +93,7 @@ impl PanelId {
         if !edges.is_loop(a) || !edges.is_chained(a) {
             return Err(self.inner_error(a, name, "its edges do not form a closed loop"));
         }
+        self.check_own_vertices(a, name, &edges)?;
         self.check_inside(a, name, &edges.linearized_positions(a))?;
         let d = a.pd_mut(self);
         d.holes.push(InnerPath { name: name.to_string(), kind, edges });
@@ -106,6 +107,7 @@ impl PanelId {
         if edges.is_empty() || (edges.len() > 1 && (!edges.is_chained(a) || edges.is_loop(a))) {
             return Err(self.inner_error(a, name, "its edges do not form an open chain"));
         }
+        self.check_own_vertices(a, name, &edges)?;
         let mid = a.geom(edges[edges.len() / 2]).point(if edges.len() % 2 == 1 { 0.5 } else { 0.0 });
         self.check_inside(a, name, &[mid])?;
         let d = a.pd_mut(self);
@@ -115,6 +117,21 @@ impl PanelId {
 
     fn inner_error(self, a: &Arena, name: &str, why: &str) -> Error {
         Error::Design(format!("'{name}' in panel '{}': {why}", self.name(a)))
+    }
+
+    /// The panel moves, mirrors and copies a hole or line with its outline: they
+    /// must not share a vertex (it would move twice).
+    fn check_own_vertices(self, a: &Arena, name: &str, edges: &EdgeSeq) -> Result<()> {
+        let new = edges.verts(a);
+        let taken = std::iter::once(self.edges(a)).chain(self.inner_edges(a)).any(|seq| seq.verts(a).iter().any(|v| new.contains(v)));
+        if taken {
+            return Err(self.inner_error(
+                a,
+                name,
+                "its edges share a vertex with the outline or another hole or line (make them over new vertices)",
+            ));
+        }
+        Ok(())
     }
 
     fn check_inner_name(self, a: &Arena, name: &str) -> Result<()> {

@@ -92,6 +92,12 @@ fn a_fold_line_turns_by_0_to_180_degrees_and_lies_across_its_panel() {
     fold_line(&mut a, &cuff, "fold", Vec2::new(0.0, 6.0), Vec2::new(25.0, 6.0), 180.0).unwrap();
     let err = fold_line(&mut a, &cuff, "fold", Vec2::new(0.0, 3.0), Vec2::new(25.0, 3.0), 180.0).unwrap_err().to_string();
     assert!(err.contains("already has a hole or line of this name"), "{err}");
+    // A line over an outline vertex would move twice with the panel.
+    let corner = a.start(cuff.edges(&a)[1]);
+    let inside = a.vertex(Vec2::new(10.0, 6.0));
+    let shared = a.edge(corner, inside, garmentcode::Curve::Line).unwrap();
+    let err = cuff.add_line(&mut a, "shared", LineKind::Placement, EdgeSeq::from(shared)).unwrap_err().to_string();
+    assert!(err.contains("share a vertex with the outline"), "{err}");
 }
 
 #[test]
