@@ -235,6 +235,8 @@ pub enum PleatStyle {
     KnifePleats,
     /// Box pleats.
     BoxPleats,
+    /// Box pleats in front, knife pleats at the back.
+    BoxAndKnife,
 }
 
 /// Waist pleats of two-panel skirts (the panel is widened by what they take in).

@@ -17,13 +17,15 @@ use garmentcode::{Arena, EdgeSeq, InterfaceId, PanelId, Result, Vec2};
 /// Pocket height as a multiple of its width.
 const POCKET_HEIGHT: f64 = 1.15;
 
-/// The pleats a two-panel skirt lays into its waist, if any.
-pub fn pleating(ext: &Extension) -> Option<Pleating> {
-    let kind = match ext.pleats.style? {
-        PleatStyle::KnifePleats => PleatKind::Knife(PleatDirection::Forward),
-        PleatStyle::BoxPleats => PleatKind::BoxPleat,
+/// The pleats a two-panel skirt lays into its front and back waist, if any.
+pub fn pleating(ext: &Extension) -> Option<[Pleating; 2]> {
+    let knife = PleatKind::Knife(PleatDirection::Forward);
+    let kinds = match ext.pleats.style? {
+        PleatStyle::KnifePleats => [knife, knife],
+        PleatStyle::BoxPleats => [PleatKind::BoxPleat, PleatKind::BoxPleat],
+        PleatStyle::BoxAndKnife => [PleatKind::BoxPleat, knife],
     };
-    Some(Pleating { kind, count: ext.pleats.count.max(1) as usize, depth: ext.pleats.depth })
+    Some(kinds.map(|kind| Pleating { kind, count: ext.pleats.count.max(1) as usize, depth: ext.pleats.depth }))
 }
 
 /// Add the extension's pieces and marks to a built upper and lower garment; the

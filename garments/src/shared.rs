@@ -64,8 +64,9 @@ pub struct BottomOptions {
     pub without_slits: bool,
     /// Leave out the waist gathers (the lower tiers of a tiered skirt).
     pub without_gathers: bool,
-    /// Pleats at the waist of a two-panel skirt (`design.extension.pleats`).
-    pub pleats: Option<crate::skirt_paneled::Pleating>,
+    /// Pleats at the waist of a two-panel skirt, front and back
+    /// (`design.extension.pleats`).
+    pub pleats: Option<[crate::skirt_paneled::Pleating; 2]>,
 }
 
 impl BottomOptions {

@@ -594,7 +594,7 @@ impl Skirt2 {
             GatherTo::top(body.waist - body.waist_back_width),
             bottom_cut,
             flare,
-            opts.pleats,
+            opts.pleats.map(|p| p[0]),
         )?;
         front.panel.translate_to(a, v3(0.0, waist_level, 25.0));
         let back = SkirtPanel::new(
@@ -606,7 +606,7 @@ impl Skirt2 {
             GatherTo::top(body.waist_back_width),
             bottom_cut,
             flare,
-            opts.pleats,
+            opts.pleats.map(|p| p[1]),
         )?;
         back.panel.translate_to(a, v3(0.0, waist_level, -20.0));
         let stitches = vec![StitchRule::new(a, front.right, back.right)?, StitchRule::new(a, front.left, back.left)?];
