@@ -776,7 +776,7 @@ fn bash_completion_offers_built_in_names_and_files() {
     assert_eq!(complete("garmentcode schema -d jump", "jump", "-d").unwrap(), "jumpsuit");
     // zsh and fish offer files beside the names too.
     let zsh = stdout(&run(&["completions", "zsh"], &dir));
-    assert!(zsh.contains(":{compadd t-shirt fitted-dress sundress shirt-dress jumpsuit; _files}'"));
+    assert!(zsh.contains(":{compadd t-shirt fitted-dress sundress shirt-dress jumpsuit birch-dress pleated-skirt pocket-shirt; _files}'"));
     let fish = stdout(&run(&["completions", "fish"], &dir));
     assert!(fish.contains("-l design") && fish.contains("-r -F -a \"t-shirt"));
 }

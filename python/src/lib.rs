@@ -774,7 +774,7 @@ impl PyPattern {
     /// The design it was built from, `{path: value}` (`None` if read from a file).
     #[getter]
     fn design<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
-        self.origin.as_ref().map(|o| design_dict(py, &o.design, &Design::design_space())).transpose()
+        self.origin.as_ref().map(|o| design_dict(py, &o.design, &garments::design::space_of(&o.design))).transpose()
     }
 
     /// The body it was built on (`None` if read from a file).
@@ -1109,7 +1109,7 @@ impl PyDrape {
 #[pyfunction]
 #[pyo3(signature = (design, body = None, name = None))]
 fn build(py: Python<'_>, design: &Bound<'_, PyAny>, body: Option<&Bound<'_, PyAny>>, name: Option<String>) -> PyResult<PyPattern> {
-    let space = Design::design_space();
+    let space = garments::design::extended_design_space();
     let (design, design_label) = load_design(design, &space)?;
     let body = load_body(body)?;
     let name = name.unwrap_or_else(|| design_label.clone());
