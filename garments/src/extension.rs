@@ -75,14 +75,23 @@ pub fn apply(a: &mut Arena, ext: &Extension, upper: Option<&Shirt>, lower: Optio
 }
 
 /// A diamond dart in a torso panel: a third of the way up, in the middle of its
-/// width, a third of its height long.
+/// width, a third of its height long; where that does not lie inside the panel (a
+/// short or cut-away panel), lower and then smaller.
 fn torso_diamond_dart(a: &mut Arena, panel: PanelId, width: f64) -> Result<()> {
     let (lo, hi) = panel.bbox(a);
     let size = hi - lo;
-    let center = Vec2::new(lo.x + size.x / 2.0, lo.y + size.y / 3.0);
     let width = width.min(size.x / 4.0);
-    diamond_dart(a, &panel, "diamond_dart", center, width, size.y / 3.0)?;
-    Ok(())
+    let mut refusal = None;
+    for scale in [1.0, 0.6] {
+        for up in [1.0 / 3.0, 0.25, 0.2] {
+            let center = Vec2::new(lo.x + size.x / 2.0, lo.y + up * size.y);
+            match diamond_dart(a, &panel, "diamond_dart", center, scale * width, scale * size.y / 3.0) {
+                Ok(_) => return Ok(()),
+                Err(e) => refusal = Some(e),
+            }
+        }
+    }
+    Err(refusal.expect("at least one try"))
 }
 
 /// Two pockets on a skirt front, each at most a fifth of its width, centred a
@@ -96,22 +105,32 @@ fn hip_pockets(a: &mut Arena, front: PanelId, width: f64, out: &mut Vec<PanelId>
 
 /// A patch pocket `width` wide (at most `share` of the panel's width) on `target`,
 /// its centre at fractions `at` of the panel's bounding box, sewn along its sides
-/// and bottom. Named `<target>_<tag>`.
+/// and bottom. Named `<target>_<tag>`. Where it does not lie inside the panel (a
+/// short or cut-away panel), it is tried lower and higher and then smaller; the
+/// last refusal is the error.
 fn pocket(a: &mut Arena, target: PanelId, width: f64, share: f64, at: [f64; 2], tag: &str) -> Result<PanelId> {
     let (lo, hi) = target.bbox(a);
     let size = hi - lo;
-    let w = width.min(share * size.x);
-    let h = (POCKET_HEIGHT * w).min(0.4 * size.y);
-    let corners = [Vec2::ZERO, Vec2::new(0.0, h), Vec2::new(w, h), Vec2::new(w, 0.0)];
-    let edges = EdgeSeq::from_points(a, &corners, true)?;
     let name = format!("{}_{tag}", target.name(a));
-    let panel = a.panel_with_edges(&name, edges.clone());
     let label = target.label(a).to_string();
-    panel.set_label(a, &label, true);
-    let sewn = a.interface(panel, EdgeSeq(vec![edges[2], edges[3], edges[0]]));
-    let center = Vec2::new(lo.x + at[0] * size.x, lo.y + at[1] * size.y);
-    place_on(a, &panel, sewn, &target, center, 0.0)?;
-    Ok(panel)
+    let mut refusal = None;
+    for scale in [1.0, 0.75, 0.5] {
+        for shift in [0.0, -0.1, 0.1, -0.2] {
+            let w = scale * width.min(share * size.x);
+            let h = (POCKET_HEIGHT * w).min(0.4 * size.y);
+            let corners = [Vec2::ZERO, Vec2::new(0.0, h), Vec2::new(w, h), Vec2::new(w, 0.0)];
+            let edges = EdgeSeq::from_points(a, &corners, true)?;
+            let panel = a.panel_with_edges(&name, edges.clone());
+            panel.set_label(a, &label, true);
+            let sewn = a.interface(panel, EdgeSeq(vec![edges[2], edges[3], edges[0]]));
+            let center = Vec2::new(lo.x + at[0] * size.x, lo.y + (at[1] + shift) * size.y);
+            match place_on(a, &panel, sewn, &target, center, 0.0) {
+                Ok(_) => return Ok(panel),
+                Err(e) => refusal = Some(e),
+            }
+        }
+    }
+    Err(refusal.expect("at least one try"))
 }
 
 /// Fold the turtle neck of a bodice half, if it has one.
