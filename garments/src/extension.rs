@@ -9,8 +9,8 @@ use crate::bands::{Cuff, StraightBandPanel};
 use crate::bodice::{BodiceHalf, Shirt};
 use crate::collars::Collar;
 use crate::design::{Extension, PleatStyle};
-use crate::meta::BottomGarment;
-use crate::skirt_paneled::Pleating;
+use crate::pants::Pants;
+use crate::shared::Pleating;
 use garmentcode::inner::{PleatDirection, PleatKind, diamond_dart, fold_line, place_on};
 use garmentcode::{Arena, EdgeSeq, InterfaceId, PanelId, Result, Vec2};
 
@@ -28,9 +28,19 @@ pub fn pleating(ext: &Extension) -> Option<[Pleating; 2]> {
     Some(kinds.map(|kind| Pleating { kind, count: ext.pleats.count.max(1) as usize, depth: ext.pleats.depth }))
 }
 
+/// What of a bottom garment the extension adds to.
+pub enum Lower<'g> {
+    /// A skirt with one front panel (two-panel and pencil skirts): hip pockets.
+    Skirt(PanelId),
+    /// Trousers: a pocket on each front leg, their cuffs.
+    Pants(&'g Pants),
+    /// None, or another garment (nothing added).
+    Other,
+}
+
 /// Add the extension's pieces and marks to a built upper and lower garment; the
 /// pockets' panels are returned (new parts of the garment).
-pub fn apply(a: &mut Arena, ext: &Extension, upper: Option<&Shirt>, lower: Option<&BottomGarment>) -> Result<Vec<PanelId>> {
+pub fn apply(a: &mut Arena, ext: &Extension, upper: Option<&Shirt>, lower: Lower<'_>) -> Result<Vec<PanelId>> {
     let mut pockets = Vec::new();
     if let Some(shirt) = upper {
         for half in [&shirt.right, &shirt.left] {
@@ -54,9 +64,8 @@ pub fn apply(a: &mut Arena, ext: &Extension, upper: Option<&Shirt>, lower: Optio
         }
     }
     match lower {
-        Some(BottomGarment::Skirt2(s)) if ext.pockets.skirt => hip_pockets(a, s.front.panel, ext.pockets.width, &mut pockets)?,
-        Some(BottomGarment::Pencil(s)) if ext.pockets.skirt => hip_pockets(a, s.front.panel, ext.pockets.width, &mut pockets)?,
-        Some(BottomGarment::Pants(p)) => {
+        Lower::Skirt(front) if ext.pockets.skirt => hip_pockets(a, front, ext.pockets.width, &mut pockets)?,
+        Lower::Pants(p) => {
             for half in [&p.right, &p.left] {
                 if ext.pockets.pants {
                     pockets.push(pocket(a, half.front.panel, ext.pockets.width, 0.45, [0.5, 0.8], "pocket")?);

@@ -5,6 +5,7 @@ use crate::bands::Waistband;
 use crate::bodice::Shirt;
 use crate::circle_skirt::SkirtCircle;
 use crate::design::{BottomKind, Design, GodetBase, LevelsBase, UpperKind, WaistbandKind};
+use crate::extension::Lower;
 use crate::godet::GodetSkirt;
 use crate::pants::Pants;
 use crate::shared::{BottomOptions, Fit, SkirtGroups, Symmetry};
@@ -124,7 +125,13 @@ impl MetaGarment {
             }
             lower.set_panel_label(a, "leg", false);
         }
-        let pockets = crate::extension::apply(a, &design.extension, upper.as_ref(), lower.as_ref())?;
+        let to_extend = match &lower {
+            Some(BottomGarment::Skirt2(s)) => Lower::Skirt(s.front.panel),
+            Some(BottomGarment::Pencil(s)) => Lower::Skirt(s.front.panel),
+            Some(BottomGarment::Pants(p)) => Lower::Pants(p),
+            _ => Lower::Other,
+        };
+        let pockets = crate::extension::apply(a, &design.extension, upper.as_ref(), to_extend)?;
         Ok(MetaGarment { upper, belt, lower, pockets, stitches })
     }
 

@@ -4,9 +4,8 @@
 use crate::common::{eval_rise, tan_deg, v2, v3};
 use crate::design::{self, SideCut};
 use crate::shapes;
-use crate::shared::{BottomOptions, Darts, GatherTo};
+use crate::shared::{BottomOptions, Darts, GatherTo, Pleating};
 use garmentcode::curves::quadratic_from_tangents;
-use garmentcode::inner::PleatKind;
 use garmentcode::math::close_enough;
 use garmentcode::ops::{Cut, DartSize, EdgeSide, ShapeOrder, cut_into_edge, cut_many_into_edge, dart_shape, distribute_y, side_with_cut};
 use garmentcode::{
@@ -40,25 +39,6 @@ pub struct SkirtPanel {
     /// Hem.
     #[interface]
     pub bottom: InterfaceId,
-}
-
-/// Pleats laid into a skirt panel's waist (see [`garmentcode::inner::pleats`]).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Pleating {
-    /// Knife or box pleats.
-    pub kind: PleatKind,
-    /// How many on the panel.
-    pub count: usize,
-    /// Depth of each fold, cm.
-    pub depth: f64,
-}
-
-impl Pleating {
-    /// Waist width the pleats take in.
-    pub fn intake(&self) -> f64 {
-        let folds = if self.kind == PleatKind::BoxPleat { 2.0 } else { 1.0 };
-        self.count as f64 * 2.0 * folds * self.depth
-    }
 }
 
 impl SkirtPanel {
