@@ -485,6 +485,9 @@ pub struct SampleArgs {
     /// A design file whose ranges and probabilities replace the built-in ones.
     #[arg(long, value_name = "FILE.yaml")]
     pub design_space: Option<String>,
+    /// Also draw the parameters past the reference (`design.extension`: pockets, pleats, diamond darts, folded cuffs and collars); the reference's parameters are drawn as without it.
+    #[arg(long)]
+    pub extended: bool,
     /// Built-in body names or body files separated by commas, or a folder of body files (default mean_all).
     #[arg(long, value_name = "NAME,NAME|DIR")]
     pub bodies: Option<String>,

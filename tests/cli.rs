@@ -747,7 +747,7 @@ fn bash_completion_offers_built_in_names_and_files() {
     assert_eq!(complete("garmentcode schema -d jump", "jump", "-d").unwrap(), "jumpsuit");
     // zsh and fish offer files beside the names too.
     let zsh = stdout(&run(&["completions", "zsh"], &dir));
-    assert!(zsh.contains(":{compadd t-shirt fitted-dress sundress shirt-dress jumpsuit; _files}'"));
+    assert!(zsh.contains(":{compadd t-shirt fitted-dress sundress shirt-dress jumpsuit birch-dress pleated-skirt pocket-shirt; _files}'"));
     let fish = stdout(&run(&["completions", "fish"], &dir));
     assert!(fish.contains("-l design") && fish.contains("-r -F -a \"t-shirt"));
 }
@@ -845,4 +845,19 @@ fn guide_writes_the_measuring_guide_for_a_body() {
     // Again into the same folder: its own files are replaced.
     assert_eq!(code(&run(&["guide", "--out", "g"], &dir)), 0);
     assert!(std::fs::read_to_string(dir.join("g/measuring-guide.html")).unwrap().contains("drawn on mean_all"));
+}
+
+#[test]
+fn the_designs_past_the_reference_build_and_write_their_extension() {
+    let dir = scratch("extension_designs");
+    for design in ["birch-dress", "pleated-skirt", "pocket-shirt"] {
+        let o = run(&["build", "--design", design, "-o", design, "--no-png"], &dir);
+        assert_eq!(code(&o), 0, "{design}: {}", stderr(&o));
+        let written = std::fs::read_to_string(dir.join(design).join("design_params.yaml")).unwrap();
+        assert!(written.contains("extension:"), "{design}: the design is written with its extension");
+    }
+    // A design within the reference's space is written without it.
+    let o = run(&["build", "--design", "t-shirt", "-o", "t-shirt", "--no-png"], &dir);
+    assert_eq!(code(&o), 0);
+    assert!(!std::fs::read_to_string(dir.join("t-shirt/design_params.yaml")).unwrap().contains("extension"));
 }

@@ -10,7 +10,45 @@ mod skirt_runtime;
 #[path = "../examples/paper_skirt.rs"]
 mod paper_skirt;
 
+#[allow(dead_code)]
+#[path = "../examples/birch_dress.rs"]
+mod birch_dress;
+
 use garmentcode::{Arena, PartExt, Severity, validate};
+
+#[test]
+fn birch_dress_has_diamond_darts_that_take_in_the_waist() {
+    let body = garments::builtin::body(garments::builtin::DEFAULT_BODY).unwrap();
+    let mut a = Arena::new();
+    let dress = birch_dress::SheathDress::new(&mut a, &body).unwrap();
+    // Side seams and shoulders match without splitting.
+    for rule in &dress.seams {
+        assert!(rule.is_matching(&a));
+        assert_eq!(rule.a.len(&a), rule.b.len(&a));
+    }
+    let pattern = dress.assemble(&mut a, "birch_dress").unwrap();
+    assert_eq!(pattern.panels.len(), 2);
+    assert_eq!(pattern.stitches.len(), 2 + 2 + 1 + 1);
+    // Two darts per panel, two seams per dart, each between sides of its own hole.
+    assert_eq!(pattern.inner_stitches.len(), 8);
+    let w_bust = (body.bust + birch_dress::EASE) / 2.0;
+    let w_waist = (body.waist + birch_dress::EASE) / 2.0;
+    for p in &pattern.panels {
+        assert_eq!(p.holes.len(), 2, "{}", p.name);
+        // Their widths add up to what the waist lacks of the bust.
+        let widths: f64 = p
+            .holes
+            .iter()
+            .map(|h| {
+                let xs = h.vertices.iter().map(|v| v[0]);
+                xs.clone().fold(f64::NEG_INFINITY, f64::max) - xs.fold(f64::INFINITY, f64::min)
+            })
+            .sum();
+        assert!((widths - (w_bust - w_waist)).abs() < 1e-6, "{}: {widths}", p.name);
+    }
+    let problems = validate(&pattern);
+    assert!(problems.iter().all(|p| p.severity != Severity::Error), "{problems:?}");
+}
 
 #[test]
 fn runtime_skirt_builds_and_fits() {

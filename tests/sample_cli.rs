@@ -598,3 +598,22 @@ fn cut_or_foreign_shards_are_refused_whole() {
     let err = unpack_err("foreign", foreign);
     assert!(err.contains("is not a sample file"), "{err}");
 }
+
+#[test]
+fn extended_sampling_draws_the_extension_parameters_too() {
+    use garmentcode::Params;
+    let dir = scratch("extended");
+    let out = dir.join("ext");
+    sample_ok(&["--n", "8", "--seed", "5", "--extended", "-j", "1", "--out", s(&out)]);
+    let space = garments::design::extended_design_space();
+    let designs: Vec<garments::Design> = samples(&out)
+        .into_iter()
+        .filter(|(k, _)| k.ends_with("design_params.yaml"))
+        .map(|(k, v)| garmentcode::io::read_design(&String::from_utf8(v).unwrap(), &k, &space).unwrap())
+        .collect();
+    assert_eq!(designs.len(), 8);
+    let defaults = garments::design::Extension::defaults();
+    assert!(designs.iter().any(|d| d.extension != defaults), "some sample uses the extension");
+    let props = fs::read_to_string(out.join("dataset_properties.yaml")).unwrap();
+    assert!(props.contains("built-in, extended"), "{props}");
+}

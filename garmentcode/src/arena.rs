@@ -12,6 +12,7 @@
 use crate::edge::{Curve, Edge};
 use crate::error::{Error, Result};
 use crate::math::{Vec2, Vec3, close_enough};
+use crate::pattern::{EdgePlace, HoleKind, Layer, LineKind};
 use crate::rotation::Rotation;
 use std::ops::{Deref, DerefMut};
 
@@ -80,6 +81,8 @@ pub(crate) struct EdgeData {
     pub label: u32,
     /// Index of the edge in its panel's written loop, set on assembly.
     pub geometric_id: u32,
+    /// Where the edge was written (outline, hole or inner line), set on assembly.
+    pub place: EdgePlace,
 }
 
 /// An ordered list of edges.
@@ -218,6 +221,21 @@ pub(crate) struct PanelData {
     /// When set, the panel's "length" is this interface's length instead of its
     /// bounding-box height.
     pub length_interface: Option<InterfaceId>,
+    /// Closed loops inside the outline (format extension), each over its own vertices.
+    pub holes: Vec<InnerPath<HoleKind>>,
+    /// Open lines inside the panel (format extension), each over its own vertices.
+    pub lines: Vec<InnerPath<LineKind>>,
+    /// Layer of a double-layer component.
+    pub layer: Layer,
+}
+
+/// A hole or an inner line of a panel: its name, kind and edges (a closed loop for
+/// a hole, an open chain for a line).
+#[derive(Clone, Debug)]
+pub(crate) struct InnerPath<K> {
+    pub name: String,
+    pub kind: K,
+    pub edges: EdgeSeq,
 }
 
 /// Storage of one garment's geometry.
@@ -359,7 +377,7 @@ impl Arena {
     }
 
     pub(crate) fn push_edge(&mut self, start: VertexId, end: VertexId, curve: Curve) -> EdgeId {
-        self.edges.push(EdgeData { start, end, curve, label: 0, geometric_id: 0 });
+        self.edges.push(EdgeData { start, end, curve, label: 0, geometric_id: 0, place: EdgePlace::Outline });
         EdgeId((self.edges.len() - 1) as u32)
     }
 

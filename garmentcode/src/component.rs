@@ -119,6 +119,11 @@ impl<T: Part + ?Sized> Part for Box<T> {
 /// assert_eq!(panel_name(&band.panel, &a), "band");
 /// # Ok::<(), garmentcode::Error>(())
 /// ```
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not a panel",
+    label = "a panel or panel class is needed here: something with one panel surface",
+    note = "pass a `PanelId` or a struct with `#[derive(Component)]` and a `#[panel]` field; a component of several panels or an edge sequence has no single surface to cut, fold or sew onto"
+)]
 pub trait PanelPart: Part {
     /// The panel.
     fn panel_id(&self) -> PanelId;

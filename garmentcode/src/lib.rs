@@ -64,6 +64,7 @@ mod test_data;
 // Function namespaces.
 pub mod curves;
 pub mod guide;
+pub mod inner;
 pub mod intersect;
 pub mod math;
 #[cfg(feature = "mesh")]

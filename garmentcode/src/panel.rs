@@ -11,6 +11,7 @@ use crate::arena::{Arena, EdgeId, InterfaceId, PanelData, PanelId};
 use crate::error::Result;
 use crate::math::{Vec2, Vec3, trunc};
 use crate::ops::{Cut, EdgeSide};
+use crate::pattern::{EdgePlace, EdgeSpec, Layer};
 use crate::rotation::Rotation;
 
 impl Arena {
@@ -25,6 +26,9 @@ impl Arena {
             interfaces: Vec::new(),
             stitches: Vec::new(),
             length_interface: None,
+            holes: Vec::new(),
+            lines: Vec::new(),
+            layer: Layer::Outer,
         });
         PanelId((self.panels.len() - 1) as u32)
     }
@@ -213,6 +217,12 @@ impl PanelId {
             let mut edges = std::mem::take(&mut a.pd_mut(self).edges);
             edges.reverse(a);
             a.pd_mut(self).edges = edges;
+            // Holes keep their turn relative to the outline.
+            for k in 0..a.pd(self).holes.len() {
+                let mut hole = std::mem::take(&mut a.pd_mut(self).holes[k].edges);
+                hole.reverse(a);
+                a.pd_mut(self).holes[k].edges = hole;
+            }
         }
     }
 
@@ -225,7 +235,11 @@ impl PanelId {
             a.pd_mut(self).translation = t;
         }
         let shift = Vec2::new(trunc(p.x), trunc(p.y));
-        for v in self.edges(a).verts(a) {
+        let mut verts = self.edges(a).verts(a);
+        for seq in self.inner_edges(a) {
+            verts.extend(seq.verts(a));
+        }
+        for v in verts {
             let q = a.pos(v);
             a.set_pos(v, Vec2::new(q.x - shift.x, q.y - shift.y));
         }
@@ -313,6 +327,9 @@ impl PanelId {
     pub fn mirror(self, a: &mut Arena) -> Self {
         let edges = a.pd(self).edges.clone();
         edges.reflect(a, Vec2::ZERO, Vec2::Y);
+        for seq in self.inner_edges(a).cloned().collect::<Vec<_>>() {
+            seq.reflect(a, Vec2::ZERO, Vec2::Y);
+        }
         a.pd_mut(self).translation.x *= -1.0;
         let mut e = a.pd(self).rotation.as_euler_xyz();
         e[1] *= -1.0;
@@ -364,53 +381,75 @@ impl PanelId {
 impl PanelId {
     /// Flatten into the written panel: reset the pivot to the first vertex (with the
     /// reference's truncation), write vertices once each (consecutive equal
-    /// coordinates merged) and record every edge's index for stitches.
+    /// coordinates merged) and record every edge's index for stitches. Holes and
+    /// inner lines are written the same way, each over its own vertices.
     pub fn assemble(self, a: &mut Arena) -> Result<crate::pattern::PanelSpec> {
-        use crate::pattern::{Curvature, EdgeSpec, PanelSpec};
+        use crate::pattern::{Hole, InnerLine, PanelSpec};
         let name = self.name(a).to_string();
         if self.edges(a).is_empty() {
             return Err(crate::error::Error::Design(format!("panel '{name}' has no edges")));
         }
         let first = a.pos(a.start(self.edges(a)[0]));
         self.set_pivot(a, first, true);
-        let edges = self.edges(a).clone();
-        let mut vertices: Vec<Vec2> = vec![a.pos(a.start(edges[0]))];
-        let mut specs = Vec::with_capacity(edges.len());
-        for (i, &e) in edges.iter().enumerate() {
-            let g = a.geom(e);
-            let shift = if *vertices.last().expect("non-empty") == g.start {
-                vertices.push(g.end);
-                vertices.len() - 2
-            } else {
-                vertices.push(g.start);
-                vertices.push(g.end);
-                vertices.len() - 2
-            };
-            a.edges[e.0 as usize].geometric_id = i as u32;
-            let curvature = match g.curve {
-                crate::edge::Curve::Line => None,
-                crate::edge::Curve::Arc { .. } => {
-                    let (r, large, right) = g.arc_radius_flags().expect("arc");
-                    Some(Curvature::Circle { radius: r, large_arc: large, right })
-                }
-                crate::edge::Curve::Quadratic(c) => Some(Curvature::Quadratic(c.into())),
-                crate::edge::Curve::Cubic(c1, c2) => Some(Curvature::Cubic(c1.into(), c2.into())),
-            };
-            let label = a.edge_label(e);
-            specs.push(EdgeSpec { endpoints: [shift, shift + 1], label: (!label.is_empty()).then(|| label.to_string()), curvature });
-        }
-        if vertices.len() > 1 && vertices.last() == vertices.first() {
-            vertices.pop();
-            specs.last_mut().expect("non-empty").endpoints[1] = 0;
-        }
+        let (vertices, specs) = write_edges(a, &self.edges(a).clone(), EdgePlace::Outline, true);
         let d = a.pd(self);
-        Ok(PanelSpec::new(
+        let mut spec = PanelSpec::new(
             &name,
             d.translation.into(),
             d.rotation.as_euler_xyz_degrees(),
-            vertices.into_iter().map(|v| v.into()).collect(),
+            vertices,
             specs,
             (!d.label.is_empty()).then(|| d.label.clone()),
-        ))
+        );
+        spec.layer = d.layer;
+        let (holes, lines) = (d.holes.clone(), d.lines.clone());
+        for (k, h) in holes.into_iter().enumerate() {
+            let (vertices, edges) = write_edges(a, &h.edges, EdgePlace::Hole(k), true);
+            spec.holes.push(Hole { name: h.name, kind: h.kind, vertices, edges });
+        }
+        for (k, l) in lines.into_iter().enumerate() {
+            let (vertices, edges) = write_edges(a, &l.edges, EdgePlace::Line(k), false);
+            spec.lines.push(InnerLine { name: l.name, kind: l.kind, vertices, edges });
+        }
+        Ok(spec)
     }
+}
+
+/// Vertices and edge records of a chain of edges as written (consecutive equal
+/// vertices merged; a `closed` chain's last edge ends at vertex 0), each edge's
+/// index and place recorded for stitches.
+fn write_edges(a: &mut Arena, edges: &EdgeSeq, place: EdgePlace, closed: bool) -> (Vec<[f64; 2]>, Vec<EdgeSpec>) {
+    use crate::pattern::Curvature;
+    let mut vertices: Vec<Vec2> = vec![a.pos(a.start(edges[0]))];
+    let mut specs = Vec::with_capacity(edges.len());
+    for (i, &e) in edges.iter().enumerate() {
+        let g = a.geom(e);
+        let shift = if *vertices.last().expect("non-empty") == g.start {
+            vertices.push(g.end);
+            vertices.len() - 2
+        } else {
+            vertices.push(g.start);
+            vertices.push(g.end);
+            vertices.len() - 2
+        };
+        let d = &mut a.edges[e.0 as usize];
+        d.geometric_id = i as u32;
+        d.place = place;
+        let curvature = match g.curve {
+            crate::edge::Curve::Line => None,
+            crate::edge::Curve::Arc { .. } => {
+                let (r, large, right) = g.arc_radius_flags().expect("arc");
+                Some(Curvature::Circle { radius: r, large_arc: large, right })
+            }
+            crate::edge::Curve::Quadratic(c) => Some(Curvature::Quadratic(c.into())),
+            crate::edge::Curve::Cubic(c1, c2) => Some(Curvature::Cubic(c1.into(), c2.into())),
+        };
+        let label = a.edge_label(e);
+        specs.push(EdgeSpec { endpoints: [shift, shift + 1], label: (!label.is_empty()).then(|| label.to_string()), curvature });
+    }
+    if closed && vertices.len() > 1 && vertices.last() == vertices.first() {
+        vertices.pop();
+        specs.last_mut().expect("non-empty").endpoints[1] = 0;
+    }
+    (vertices.into_iter().map(|v| v.into()).collect(), specs)
 }

@@ -171,9 +171,16 @@ impl Arena {
         }
         let src = self.pd(p);
         let (name, label, translation, rotation) = (src.name.clone(), src.label.clone(), src.translation, src.rotation);
+        let (mut holes, mut lines, layer) = (src.holes.clone(), src.lines.clone(), src.layer);
         let old_edges = src.edges.clone();
         let new_edges = self.copy_edges(&old_edges);
         map.edges.extend(old_edges.iter().copied().zip(new_edges.iter().copied()));
+        let inner = holes.iter_mut().map(|h| &mut h.edges).chain(lines.iter_mut().map(|l| &mut l.edges));
+        for seq in inner {
+            let copy = self.copy_edges(seq);
+            map.edges.extend(seq.iter().copied().zip(copy.iter().copied()));
+            *seq = EdgeSeq(copy);
+        }
         self.panels.push(PanelData {
             name,
             label,
@@ -183,6 +190,9 @@ impl Arena {
             interfaces: Vec::new(),
             stitches: Vec::new(),
             length_interface: None,
+            holes,
+            lines,
+            layer,
         });
         map.panels.push((p, PanelId((self.panels.len() - 1) as u32)));
     }

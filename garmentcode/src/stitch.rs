@@ -9,6 +9,7 @@
 use crate::arena::{Arena, InterfaceId, StitchRule};
 use crate::error::{Error, Result};
 use crate::math::close_enough;
+use crate::pattern::EdgePlace;
 
 /// One written stitch: panel name and edge index on each side.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -17,6 +18,10 @@ pub struct StitchRecord {
     pub sides: [(String, usize); 2],
     /// One fabric is flipped (right side to wrong side).
     pub right_wrong: bool,
+    /// Where each side's edge lies in its panel (outline, hole or inner line): a
+    /// stitch with a side off the outline is written as an
+    /// [`InnerStitch`](crate::InnerStitch).
+    pub places: [EdgePlace; 2],
 }
 
 impl StitchRule {
@@ -61,6 +66,7 @@ impl StitchRule {
                     (ib.panels[i].name(arena).to_string(), arena.geometric_id(ib.edges[i]) as usize),
                 ],
                 right_wrong: ia.right_wrong[i] || ib.right_wrong[i],
+                places: [arena.edges[ia.edges[i].0 as usize].place, arena.edges[ib.edges[i].0 as usize].place],
             });
         }
     }
@@ -95,10 +101,7 @@ fn match_to_fractions(arena: &mut Arena, inter: InterfaceId, targets: &[f64], to
                 split = 1.0 - split;
             }
             let mut pieces = arena.subdivide(base, &[split, 1.0 - split], true)?;
-            let mut loop_edges = std::mem::take(panel.edges_mut(arena));
-            let replaced = loop_edges.substitute(base, &pieces);
-            *panel.edges_mut(arena) = loop_edges;
-            replaced.map_err(|_| Error::Projection { panels: panel_names(arena, inter) })?;
+            panel.substitute_edge(arena, base, &pieces).map_err(|_| Error::Projection { panels: panel_names(arena, inter) })?;
             if flip {
                 pieces.reverse();
             }

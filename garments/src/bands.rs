@@ -271,10 +271,10 @@ impl CuffSkirt {
         let width = c.b_width;
         let flare_diff = (c.skirt_flare - 1.0) * width / 2.0;
         let front =
-            SkirtPanel::new(a, &format!("{tag}_cuff_skirt_f"), width / 2.0, length, c.skirt_ruffle, GatherTo::NONE, 0.0, flare_diff)?;
+            SkirtPanel::new(a, &format!("{tag}_cuff_skirt_f"), width / 2.0, length, c.skirt_ruffle, GatherTo::NONE, 0.0, flare_diff, None)?;
         front.panel.translate_by(a, v3(0.0, 0.0, 15.0));
         let back =
-            SkirtPanel::new(a, &format!("{tag}_cuff_skirt_b"), width / 2.0, length, c.skirt_ruffle, GatherTo::NONE, 0.0, flare_diff)?;
+            SkirtPanel::new(a, &format!("{tag}_cuff_skirt_b"), width / 2.0, length, c.skirt_ruffle, GatherTo::NONE, 0.0, flare_diff, None)?;
         back.panel.translate_by(a, v3(0.0, 0.0, -15.0));
         let stitches = vec![StitchRule::new(a, front.right, back.right)?, StitchRule::new(a, front.left, back.left)?];
         let top = a.interface_from(&[front.top, back.top]);

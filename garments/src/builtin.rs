@@ -1,7 +1,7 @@
 //! Built-in bodies and named designs, embedded in the binary.
 
 use garmentcode::io::read_design;
-use garmentcode::{Body, BodyError, Params};
+use garmentcode::{Body, BodyError};
 
 use crate::Design;
 
@@ -42,6 +42,9 @@ pub const DESIGNS: &[(&str, &str)] = &[
     ("sundress", include_str!("../data/designs/sundress.yaml")),
     ("shirt-dress", include_str!("../data/designs/shirt-dress.yaml")),
     ("jumpsuit", include_str!("../data/designs/jumpsuit.yaml")),
+    ("birch-dress", include_str!("../data/designs/birch-dress.yaml")),
+    ("pleated-skirt", include_str!("../data/designs/pleated-skirt.yaml")),
+    ("pocket-shirt", include_str!("../data/designs/pocket-shirt.yaml")),
 ];
 
 /// The design built when none is given.
@@ -49,8 +52,7 @@ pub const DEFAULT_DESIGN: &str = "t-shirt";
 
 /// A built-in design by name.
 pub fn design(name: &str) -> Option<Design> {
-    DESIGNS
-        .iter()
-        .find(|(n, _)| *n == name)
-        .map(|(n, text)| read_design(text, &format!("<built-in design {n}>"), &Design::design_space()).expect("built-in designs are valid"))
+    DESIGNS.iter().find(|(n, _)| *n == name).map(|(n, text)| {
+        read_design(text, &format!("<built-in design {n}>"), &crate::design::extended_design_space()).expect("built-in designs are valid")
+    })
 }

@@ -170,6 +170,114 @@ pub struct Design {
     pub levels_skirt: LevelsSkirt,
     /// Trousers.
     pub pants: Pants,
+    /// Past the reference's language (patch pockets, pleats, diamond darts, folded
+    /// cuffs and collars): all off by default and left out of this design space,
+    /// which is the reference's; [`extended_design_space`] adds them.
+    #[param(pockets(skip), pleats(skip), darts(skip), cuff(skip), collar(skip))]
+    pub extension: Extension,
+}
+
+/// The reference's design space followed by the [`Extension`] parameters (under
+/// `extension.`): what design files are read with, and what `sample --extended`
+/// draws from. The reference's parameters come first, in the same order, so a
+/// sampler draws the same values for them whichever of the two spaces it uses.
+pub fn extended_design_space() -> garmentcode::DesignSpace {
+    use garmentcode::Params;
+    let mut params = Design::design_space().params().to_vec();
+    Extension::describe("extension", &mut params);
+    garmentcode::DesignSpace::new(params)
+}
+
+/// The space a design is written with: the reference's, or the extended one when
+/// the design sets any [`Extension`] parameter (so that a design within the
+/// reference's space is written as before).
+pub fn space_of(design: &Design) -> garmentcode::DesignSpace {
+    use garmentcode::Params;
+    if design.extension == Extension::defaults() { Design::design_space() } else { extended_design_space() }
+}
+
+/// Constructs past the reference's language (issue 25), each off by default.
+#[derive(Clone, Debug, PartialEq, Params)]
+pub struct Extension {
+    /// Patch pockets sewn on top.
+    pub pockets: Pockets,
+    /// Pleats at the waist of two-panel skirts.
+    pub pleats: Pleats,
+    /// Diamond darts in loose shirts (a dress fitted without a waist seam's darts).
+    pub darts: DiamondDarts,
+    /// Band cuffs twice as long, folded along the middle.
+    pub cuff: FoldedCuff,
+    /// Turtle necks twice as high, folded along the middle.
+    pub collar: FoldedCollar,
+}
+
+/// Patch pockets.
+#[derive(Clone, Debug, PartialEq, Params)]
+pub struct Pockets {
+    /// A chest pocket on shirts.
+    #[param(default = false, prob = 0.8)]
+    pub shirt: bool,
+    /// Two hip pockets on two-panel and pencil skirts.
+    #[param(default = false, prob = 0.8)]
+    pub skirt: bool,
+    /// A pocket on each front leg of trousers.
+    #[param(default = false, prob = 0.8)]
+    pub pants: bool,
+    /// Pocket width, cm (at most 45% of the panel it sits on); its height is 1.15 times this.
+    #[param(range = 8..=20, default = 13, prob = 0.5)]
+    pub width: f64,
+}
+
+/// Pleat styles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Choice)]
+pub enum PleatStyle {
+    /// Knife pleats, all folded the same way.
+    KnifePleats,
+    /// Box pleats.
+    BoxPleats,
+    /// Box pleats in front, knife pleats at the back.
+    BoxAndKnife,
+}
+
+/// Waist pleats of two-panel skirts (the panel is widened by what they take in).
+#[derive(Clone, Debug, PartialEq, Params)]
+pub struct Pleats {
+    /// Pleat style (none: no pleats).
+    #[param(default = None, prob = 0.7)]
+    pub style: Option<PleatStyle>,
+    /// Pleats on each of the front and back panels.
+    #[param(range = 1..=8, default = 4, prob = 0.5)]
+    pub count: i64,
+    /// Depth of each fold, cm.
+    #[param(range = 1..=4, default = 2.5, prob = 0.5)]
+    pub depth: f64,
+}
+
+/// Diamond darts.
+#[derive(Clone, Debug, PartialEq, Params)]
+pub struct DiamondDarts {
+    /// A diamond dart in each front and back panel of loose shirts.
+    #[param(default = false, prob = 0.8)]
+    pub diamond: bool,
+    /// Width of each dart at its widest, cm.
+    #[param(range = 1..=5, default = 3, prob = 0.5)]
+    pub width: f64,
+}
+
+/// Folded cuffs.
+#[derive(Clone, Debug, PartialEq, Params)]
+pub struct FoldedCuff {
+    /// Band cuffs doubled: twice as long, folded back inside along the middle.
+    #[param(default = false, prob = 0.8)]
+    pub double: bool,
+}
+
+/// Folded collars.
+#[derive(Clone, Debug, PartialEq, Params)]
+pub struct FoldedCollar {
+    /// Turtle necks doubled: twice as high, folded down along the middle.
+    #[param(default = false, prob = 0.8)]
+    pub folded: bool,
 }
 
 /// Which components the garment has.

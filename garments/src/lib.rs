@@ -18,6 +18,7 @@ pub mod circle_skirt;
 pub mod collars;
 mod common;
 pub mod design;
+pub mod extension;
 pub mod godet;
 pub mod logo;
 pub mod meta;

@@ -5,13 +5,14 @@ use crate::bands::Waistband;
 use crate::bodice::Shirt;
 use crate::circle_skirt::SkirtCircle;
 use crate::design::{BottomKind, Design, GodetBase, LevelsBase, UpperKind, WaistbandKind};
+use crate::extension::Lower;
 use crate::godet::GodetSkirt;
 use crate::pants::Pants;
 use crate::shared::{BottomOptions, Fit, SkirtGroups, Symmetry};
 use crate::skirt_levels::SkirtLevels;
 use crate::skirt_paneled::{PencilSkirt, Skirt2, SkirtManyPanels};
 use garmentcode::slots::{Bottom, Top};
-use garmentcode::{Align, Arena, Body, Component, InterfaceId, PartExt, Result, SlotExt, StitchRule};
+use garmentcode::{Align, Arena, Body, Component, InterfaceId, PanelId, Part, PartExt, Result, SlotExt, StitchRule};
 
 /// The bottom garment of a design: one of the library's skirts or the pants. Each
 /// exposes a `top` to sew to the waist.
@@ -51,7 +52,7 @@ impl BottomGarment {
 
 /// A complete garment.
 #[derive(Component)]
-#[component(name = "MetaGarment")]
+#[component(name = "MetaGarment", length = Self::garment_length)]
 pub struct MetaGarment {
     /// Upper garment.
     #[part]
@@ -62,6 +63,9 @@ pub struct MetaGarment {
     /// Bottom garment.
     #[part]
     pub lower: Option<BottomGarment>,
+    /// Pieces sewn on top (patch pockets: `design.extension`).
+    #[part]
+    pub pockets: Vec<PanelId>,
     /// Upper to band to bottom.
     #[stitches]
     pub stitches: Vec<StitchRule>,
@@ -121,17 +125,38 @@ impl MetaGarment {
             }
             lower.set_panel_label(a, "leg", false);
         }
-        Ok(MetaGarment { upper, belt, lower, stitches })
+        let to_extend = match &lower {
+            Some(BottomGarment::Skirt2(s)) => Lower::Skirt(s.front.panel),
+            Some(BottomGarment::Pencil(s)) => Lower::Skirt(s.front.panel),
+            Some(BottomGarment::Pants(p)) => Lower::Pants(p),
+            _ => Lower::Other,
+        };
+        let pockets = crate::extension::apply(a, &design.extension, upper.as_ref(), to_extend)?;
+        Ok(MetaGarment { upper, belt, lower, pockets, stitches })
     }
 
     /// Total length: upper + band + bottom, as the reference measures it.
     pub fn total_length(&self, a: &Arena) -> f64 {
         Component::length(self, a)
     }
+
+    /// The parts' lengths summed, pieces sewn on top (pockets) left out.
+    fn garment_length(&self, a: &Arena) -> f64 {
+        let mut total = 0.0;
+        let parts: [Option<&dyn Part>; 3] = [
+            self.upper.as_ref().map(|p| p as &dyn Part),
+            self.belt.as_ref().map(|p| p as &dyn Part),
+            self.lower.as_ref().map(|p| p as &dyn Part),
+        ];
+        for p in parts.into_iter().flatten() {
+            total += p.node().length(a);
+        }
+        total
+    }
 }
 
 fn build_bottom(a: &mut Arena, body: &Body, design: &Design, kind: BottomKind, rise: Option<f64>) -> Result<BottomGarment> {
-    let opts = BottomOptions::at_rise(rise);
+    let opts = BottomOptions { pleats: crate::extension::pleating(&design.extension), ..BottomOptions::at_rise(rise) };
     let skirts = SkirtGroups::of(design);
     Ok(match kind {
         BottomKind::SkirtCircle => SkirtCircle::new(a, body, &design.flare_skirt, Symmetry::Symmetric, &opts)?.into(),

@@ -64,6 +64,9 @@ pub struct BottomOptions {
     pub without_slits: bool,
     /// Leave out the waist gathers (the lower tiers of a tiered skirt).
     pub without_gathers: bool,
+    /// Pleats at the waist of a two-panel skirt, front and back
+    /// (`design.extension.pleats`).
+    pub pleats: Option<[Pleating; 2]>,
 }
 
 impl BottomOptions {
@@ -137,4 +140,23 @@ pub enum Darts {
     Single,
     /// Two darts, the outer one shorter.
     Double,
+}
+
+/// Pleats laid into a skirt panel's waist (see [`garmentcode::inner::pleats`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pleating {
+    /// Knife or box pleats.
+    pub kind: garmentcode::inner::PleatKind,
+    /// How many on the panel.
+    pub count: usize,
+    /// Depth of each fold, cm.
+    pub depth: f64,
+}
+
+impl Pleating {
+    /// Waist width the pleats take in.
+    pub fn intake(&self) -> f64 {
+        let folds = if self.kind == garmentcode::inner::PleatKind::BoxPleat { 2.0 } else { 1.0 };
+        self.count as f64 * 2.0 * folds * self.depth
+    }
 }

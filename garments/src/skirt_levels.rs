@@ -69,8 +69,14 @@ impl SkirtLevels {
             lbody.waist = ruffle * prev.iface::<Bottom>().length(a);
             lbody.waist_back_width = ruffle * prev.iface::<BottomB>().length(a);
             // QUIRK: a tier takes its own `rise` parameter with the overwritten waist.
-            let tier =
-                BottomOptions { tag: i.to_string(), length: Some(level_len), rise: None, without_slits: true, without_gathers: true };
+            let tier = BottomOptions {
+                tag: i.to_string(),
+                length: Some(level_len),
+                rise: None,
+                without_slits: true,
+                without_gathers: true,
+                pleats: None,
+            };
             let level = match l.level {
                 LevelKind::Skirt2 => Stackable::Skirt2(Skirt2::new(a, &lbody, skirts.skirt, &tier)?),
                 LevelKind::SkirtCircle => Stackable::Circle(SkirtCircle::new(a, &lbody, skirts.flare_skirt, Symmetry::Symmetric, &tier)?),

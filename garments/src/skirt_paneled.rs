@@ -4,7 +4,7 @@
 use crate::common::{eval_rise, tan_deg, v2, v3};
 use crate::design::{self, SideCut};
 use crate::shapes;
-use crate::shared::{BottomOptions, Darts, GatherTo};
+use crate::shared::{BottomOptions, Darts, GatherTo, Pleating};
 use garmentcode::curves::quadratic_from_tangents;
 use garmentcode::math::close_enough;
 use garmentcode::ops::{Cut, DartSize, EdgeSide, ShapeOrder, cut_into_edge, cut_many_into_edge, dart_shape, distribute_y, side_with_cut};
@@ -43,7 +43,9 @@ pub struct SkirtPanel {
 
 impl SkirtPanel {
     /// Trapezoid of waist `waist_length·ruffles` widened by `flare` per side at the
-    /// hem; the waist gathered to `gather.top` (or by `ruffles` when not set).
+    /// hem; the waist gathered to `gather.top` (or by `ruffles` when not set). With
+    /// `pleats`, the waist is wider by what they take in and they are laid into it,
+    /// so that its flat parts are `waist_length·ruffles` long.
     pub fn new(
         a: &mut Arena,
         name: &str,
@@ -53,8 +55,9 @@ impl SkirtPanel {
         gather: GatherTo,
         bottom_cut: f64,
         flare: f64,
+        pleats: Option<Pleating>,
     ) -> Result<SkirtPanel> {
-        let top_width = waist_length * ruffles;
+        let top_width = waist_length * ruffles + pleats.map_or(0.0, |p| p.intake());
         let low_width = top_width + 2.0 * flare;
         let x_shift_top = (low_width - top_width) / 2.0;
         let origin = a.vertex(v2(0.0, 0.0));
@@ -79,8 +82,15 @@ impl SkirtPanel {
         edges.push(bottom);
         let panel = a.panel_with_edges(name, edges);
         let r = a.interface(panel, right.last_edge());
+        let waist = match pleats {
+            None => EdgeSeq::from(waist),
+            Some(p) => {
+                let mark = (length / 3.0).min(20.0);
+                garmentcode::inner::pleats(a, &panel, "waist", waist, p.count, p.depth, p.kind, mark)?.flat
+            }
+        };
         let ruffle = match gather.top {
-            Some(m) => a.edge_length(waist) / m,
+            Some(m) => waist.length(a) / m,
             None => ruffles,
         };
         let top = a.interface_gathered(panel, waist, ruffle)?.reverse(a, true);
@@ -564,10 +574,20 @@ impl Skirt2 {
             GatherTo::top(body.waist - body.waist_back_width),
             bottom_cut,
             flare,
+            opts.pleats.map(|p| p[0]),
         )?;
         front.panel.translate_to(a, v3(0.0, waist_level, 25.0));
-        let back =
-            SkirtPanel::new(a, &name("skirt_back"), back_waist, length, ruffles, GatherTo::top(body.waist_back_width), bottom_cut, flare)?;
+        let back = SkirtPanel::new(
+            a,
+            &name("skirt_back"),
+            back_waist,
+            length,
+            ruffles,
+            GatherTo::top(body.waist_back_width),
+            bottom_cut,
+            flare,
+            opts.pleats.map(|p| p[1]),
+        )?;
         back.panel.translate_to(a, v3(0.0, waist_level, -20.0));
         let stitches = vec![StitchRule::new(a, front.right, back.right)?, StitchRule::new(a, front.left, back.left)?];
         let top = a.interface_from(&[front.top, back.top]);

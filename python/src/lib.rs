@@ -426,7 +426,7 @@ impl PyDesignSpace {
     #[pyo3(signature = (path = None))]
     fn new(path: Option<&Bound<'_, PyAny>>) -> PyResult<PyDesignSpace> {
         let source = path.map(path_or_str).transpose()?;
-        let (space, _) = sample_cmd::load_space(source.as_deref()).map_err(|e| DesignError::new_err(cli_message(e)))?;
+        let (space, _) = sample_cmd::load_space(source.as_deref(), false).map_err(|e| DesignError::new_err(cli_message(e)))?;
         Ok(PyDesignSpace { space, source })
     }
 
@@ -794,7 +794,7 @@ impl PyPattern {
     /// The design it was built from, `{path: value}` (`None` if read from a file).
     #[getter]
     fn design<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
-        self.origin.as_ref().map(|o| design_dict(py, &o.design, &Design::design_space())).transpose()
+        self.origin.as_ref().map(|o| design_dict(py, &o.design, &garments::design::space_of(&o.design))).transpose()
     }
 
     /// The body it was built on (`None` if read from a file).
@@ -1129,7 +1129,7 @@ impl PyDrape {
 #[pyfunction]
 #[pyo3(signature = (design, body = None, name = None))]
 fn build(py: Python<'_>, design: &Bound<'_, PyAny>, body: Option<&Bound<'_, PyAny>>, name: Option<String>) -> PyResult<PyPattern> {
-    let space = Design::design_space();
+    let space = garments::design::extended_design_space();
     let (design, design_label) = load_design(design, &space)?;
     let body = load_body(body)?;
     let name = name.unwrap_or_else(|| design_label.clone());
@@ -1211,6 +1211,7 @@ fn sample_dataset(
         seed: Some(seed),
         out: out.clone(),
         design_space,
+        extended: false,
         bodies: bodies_arg(bodies)?,
         jobs,
         shard: shard.map(|(i, k)| format!("{i}/{k}")),

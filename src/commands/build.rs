@@ -4,7 +4,6 @@ use crate::cli::{BuildArgs, BuildFormat};
 use crate::commands::drape::{DrapeSetup, EXIT_UNSETTLED, ProgressLine, drape_files, load_body_mesh, load_fabric};
 use crate::commands::{CliError, load_body, load_design, write_folder};
 use crate::output::OutputSet;
-use garmentcode::Params;
 use garmentcode::io::write_design;
 use garmentcode::mesh::BoxMesh;
 use garments::Design;
@@ -129,7 +128,7 @@ pub fn files(
         }
     }
     if let Some(o) = origin {
-        set.add("design_params.yaml", write_design(o.design, &Design::design_space()));
+        set.add("design_params.yaml", write_design(o.design, &garments::design::space_of(o.design)));
         set.add("body_measurements.yaml", o.body.to_yaml());
         set.add("checks.json", o.checks.to_json());
     }

@@ -148,13 +148,12 @@ fn source<'a>(arg: &'a str, known: &[&str], what: &str) -> Result<Source<'a>, Cl
 
 /// The design to build: a built-in name or a design file.
 pub fn load_design(arg: &str) -> Result<(garments::Design, String), CliError> {
-    use garmentcode::Params;
     let known: Vec<&str> = garments::builtin::DESIGNS.iter().map(|(n, _)| *n).collect();
     match source(arg, &known, "design")? {
         Source::Builtin(name) => Ok((garments::builtin::design(name).expect("a built-in design"), name.to_string())),
         Source::File(text) => {
-            let d =
-                garmentcode::io::read_design(&text, arg, &garments::Design::design_space()).map_err(|e| CliError::Input(e.to_string()))?;
+            let d = garmentcode::io::read_design(&text, arg, &garments::design::extended_design_space())
+                .map_err(|e| CliError::Input(e.to_string()))?;
             let stem = Path::new(arg).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "design".into());
             Ok((d, stem))
         }

@@ -80,10 +80,12 @@ impl ApiError {
 
 type ApiResult<T> = Result<T, ApiError>;
 
-/// The design space, computed once.
+/// The design space, computed once: the reference's followed by
+/// `design.extension` (the page's controls and the designs it reads; "random"
+/// draws from the reference's alone, as `garmentcode sample` does).
 pub fn space() -> &'static DesignSpace {
     static SPACE: OnceLock<DesignSpace> = OnceLock::new();
-    SPACE.get_or_init(Design::design_space)
+    SPACE.get_or_init(garments::design::extended_design_space)
 }
 
 /// The built-in bodies, parsed once.
@@ -857,7 +859,7 @@ pub fn random(input: &Json) -> ApiResult<Json> {
         }
     };
     let (name, body) = body_from(input.get("body"))?;
-    let sampler = DatasetSampler::new(seed, space().clone(), vec![NamedBody { name, body }])
+    let sampler = DatasetSampler::new(seed, Design::design_space(), vec![NamedBody { name, body }])
         .map_err(|e| ApiError::new(500, format!("internal error: {e}")))?;
     let outcome = ARENA.with(|a| sampler.draw_in(&mut a.borrow_mut(), 0));
     Ok(match outcome {
@@ -891,7 +893,10 @@ fn design_to_values(design: &Design) -> Vec<(String, PValue)> {
 /// builds, else `error.txt` with the reason.
 fn file_set(input: &Json) -> ApiResult<(Evaluation, Vec<(&'static str, String)>)> {
     let ev = evaluate(input)?;
-    let mut files = vec![("design_params.yaml", write_design(&ev.design, space())), ("body_measurements.yaml", ev.body.to_yaml())];
+    let mut files = vec![
+        ("design_params.yaml", write_design(&ev.design, &garments::design::space_of(&ev.design))),
+        ("body_measurements.yaml", ev.body.to_yaml()),
+    ];
     match &ev.result {
         Ok(out) => {
             files.push(("specification.json", out.spec.clone()));

@@ -2,7 +2,7 @@
 //! then z, with a 10 cm fuzzy grouping), computed exactly as the reference does
 //! (including its use of the `Rz·Ry·Rx` convention for the stored angles).
 
-use super::{PanelSpec, Pattern, StitchSide, StitchSpec};
+use super::{EdgePlace, InnerSide, InnerStitch, PanelSpec, Pattern, StitchSide, StitchSpec};
 use crate::math::Vec3;
 use crate::rotation::matrix_zyx_from_degrees;
 use crate::stitch::StitchRecord;
@@ -12,10 +12,15 @@ impl Pattern {
     pub fn from_parts(name: &str, panels: Vec<PanelSpec>, stitches: Vec<StitchRecord>) -> Pattern {
         let mut p = Pattern::new(name);
         p.panels = panels;
-        p.stitches = stitches
-            .into_iter()
-            .map(|r| StitchSpec { sides: r.sides.map(|(panel, edge)| StitchSide { panel, edge }), right_wrong: r.right_wrong })
-            .collect();
+        for r in stitches {
+            if r.places == [EdgePlace::Outline; 2] {
+                p.stitches.push(StitchSpec { sides: r.sides.map(|(panel, edge)| StitchSide { panel, edge }), right_wrong: r.right_wrong });
+            } else {
+                let [(p0, e0), (p1, e1)] = r.sides;
+                let sides = [InnerSide { panel: p0, place: r.places[0], edge: e0 }, InnerSide { panel: p1, place: r.places[1], edge: e1 }];
+                p.inner_stitches.push(InnerStitch { sides, right_wrong: r.right_wrong });
+            }
+        }
         if !p.panels.is_empty() {
             p.panel_order = Some(panel_order(&p));
         }

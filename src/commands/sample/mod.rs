@@ -42,6 +42,7 @@ struct Options {
     seed: u64,
     out: PathBuf,
     design_space: Option<String>,
+    extended: bool,
     bodies: Option<String>,
     jobs: usize,
     shard: Option<(u64, u64)>,
@@ -94,6 +95,7 @@ impl Options {
             seed: args.seed.expect("--seed is required without --unpack"),
             out: args.out,
             design_space: args.design_space,
+            extended: args.extended,
             bodies: args.bodies,
             jobs,
             shard,
@@ -148,10 +150,13 @@ fn parse_formats(s: &str) -> Result<Formats, CliError> {
     Ok(f)
 }
 
-/// The design space: the built-in one, or a design file's ranges and probabilities.
-pub fn load_space(file: Option<&str>) -> Result<(garmentcode::DesignSpace, String), CliError> {
-    let base = Design::design_space();
-    let Some(file) = file else { return Ok((base, "built-in".into())) };
+/// The design space: the built-in one (the reference's, or with `extended` the
+/// reference's followed by `design.extension`), or a design file's ranges and
+/// probabilities over it.
+pub fn load_space(file: Option<&str>, extended: bool) -> Result<(garmentcode::DesignSpace, String), CliError> {
+    let (base, label) =
+        if extended { (garments::design::extended_design_space(), "built-in, extended") } else { (Design::design_space(), "built-in") };
+    let Some(file) = file else { return Ok((base, label.into())) };
     let text = super::read_text(file).map_err(|e| CliError::Input(format!("{file}: cannot read the design space: {e}")))?;
     let space =
         garmentcode::DesignSpace::from_yaml(&text, file, &base).map_err(|e| CliError::Input(format!("invalid design space: {e}")))?;
@@ -247,7 +252,7 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>, quiet: bool) 
         return unpack(&args.unpack, &args.out);
     }
     let opts = Options::from_args(args)?;
-    let (space, space_label) = load_space(opts.design_space.as_deref())?;
+    let (space, space_label) = load_space(opts.design_space.as_deref(), opts.extended)?;
     let bodies = load_bodies(opts.bodies.as_deref())?;
     let body_names: Vec<String> = bodies.iter().map(|b| b.name.clone()).collect();
     let sampler = DatasetSampler::new(opts.seed, space, bodies).map_err(|e| CliError::Input(e.to_string()))?;

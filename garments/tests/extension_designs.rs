@@ -1,0 +1,108 @@
+//! The built-in designs past the reference's language (`design.extension`): each
+//! builds on every built-in body and passes the reference's checks, with the holes,
+//! lines and stitches its constructs make; with the extension at its defaults, a
+//! design is the reference's (its design space and samples are unchanged).
+
+use garmentcode::{EdgePlace, HoleKind, LineKind, Params, Pattern, Sampler, Severity, sample_rng};
+use garments::design::{Extension, extended_design_space};
+use garments::{Design, builtin};
+
+fn build(name: &str, body: &str) -> Pattern {
+    let design = builtin::design(name).unwrap();
+    let body = builtin::body(body).unwrap();
+    let built = garments::build::build(&design, &body, name).unwrap_or_else(|e| panic!("{name}: {e}"));
+    assert!(built.checks.passed(), "{name}: {:?}", built.checks.warnings());
+    let problems = garmentcode::validate(&built.pattern);
+    assert!(problems.iter().all(|p| p.severity != Severity::Error), "{name}: {problems:?}");
+    built.pattern
+}
+
+#[test]
+fn the_birch_dress_has_a_diamond_dart_in_each_bodice_panel() {
+    for (body, _) in builtin::BODIES {
+        let p = build("birch-dress", body);
+        let darted: Vec<&str> = p.panels.iter().filter(|s| !s.holes.is_empty()).map(|s| s.name.as_str()).collect();
+        let mut sorted = darted.clone();
+        sorted.sort();
+        assert_eq!(sorted, ["left_btorso", "left_ftorso", "right_btorso", "right_ftorso"], "{body}");
+        for s in p.panels.iter().filter(|s| !s.holes.is_empty()) {
+            let hole = &s.holes[0];
+            assert_eq!((hole.kind, hole.edges.len()), (HoleKind::Dart, 4));
+            // 3 cm wide, a third of the panel high.
+            let xs: Vec<f64> = hole.vertices.iter().map(|v| v[0]).collect();
+            let width = xs.iter().cloned().fold(f64::NEG_INFINITY, f64::max) - xs.iter().cloned().fold(f64::INFINITY, f64::min);
+            assert!((width - 3.0).abs() < 1e-6, "{body} {}: {width}", s.name);
+        }
+        // Two stitches per dart, between its own sides.
+        assert_eq!(p.inner_stitches.len(), 8);
+        assert!(p.inner_stitches.iter().all(|st| st.sides[0].panel == st.sides[1].panel && st.sides[0].place == EdgePlace::Hole(0)));
+    }
+}
+
+#[test]
+fn the_pleated_skirt_stitches_its_folded_width_to_the_band() {
+    for (body, _) in builtin::BODIES {
+        let p = build("pleated-skirt", body);
+        // Three box pleats in front (two folds and a placement each), three knife
+        // pleats at the back (a fold and a placement each).
+        for (name, lines) in [("skirt_front", 9), ("skirt_back", 6)] {
+            let s = p.panel(name).unwrap();
+            let kinds: Vec<LineKind> = s.lines.iter().map(|l| l.kind).collect();
+            assert_eq!(kinds.len(), lines, "{body} {name}");
+            assert_eq!(kinds.iter().filter(|k| **k == LineKind::PleatPlacement).count(), 3);
+        }
+        // 3 pleats × 2 folds in front, 3 × 1 at the back, each 2.5 cm onto 2.5 cm, on
+        // the outline.
+        let pleat_stitches: Vec<_> =
+            p.stitches.iter().filter(|st| st.sides[0].panel == st.sides[1].panel && st.sides[0].panel.starts_with("skirt_")).collect();
+        assert_eq!(pleat_stitches.len(), 9, "{body}");
+        for st in pleat_stitches {
+            let panel = p.panel(&st.sides[0].panel).unwrap();
+            for side in &st.sides {
+                assert!((panel.edge_geom(side.edge).length() - 2.5).abs() < 1e-6);
+            }
+        }
+        assert!(p.inner_stitches.is_empty());
+    }
+}
+
+#[test]
+fn the_pocket_shirt_has_a_pocket_and_folded_cuffs() {
+    for (body, _) in builtin::BODIES {
+        let p = build("pocket-shirt", body);
+        let pocket = p.panel("right_ftorso_pocket").unwrap_or_else(|| panic!("{body}: no pocket"));
+        assert_eq!(pocket.edges.len(), 4);
+        let front = p.panel("right_ftorso").unwrap();
+        assert_eq!(front.lines.iter().map(|l| l.kind).collect::<Vec<_>>(), [LineKind::Placement]);
+        let onto: Vec<_> = p.inner_stitches.iter().filter(|st| st.sides[1].place == EdgePlace::Line(0)).collect();
+        assert_eq!(onto.len(), 3, "{body}: sides and bottom");
+        // Four cuff panels, each with a fold line in the middle.
+        let cuffs: Vec<_> = p.panels.iter().filter(|s| s.name.contains("cuff")).collect();
+        assert_eq!(cuffs.len(), 4);
+        for c in cuffs {
+            assert_eq!(c.lines.len(), 1, "{}", c.name);
+            assert_eq!(c.lines[0].kind, LineKind::Fold { angle: 180.0 });
+        }
+    }
+}
+
+#[test]
+fn the_extension_is_outside_the_references_design_space_and_its_samples() {
+    let reference = Design::design_space();
+    assert!(reference.params().iter().all(|p| !p.path.starts_with("extension")));
+    let extended = extended_design_space();
+    assert_eq!(&extended.params()[..reference.params().len()], reference.params());
+    assert!(extended.params()[reference.params().len()..].iter().all(|p| p.path.starts_with("extension.")));
+    // The same seed draws the same reference parameters in both spaces, and the
+    // reference's space leaves the extension at its defaults.
+    let (plain, wide) = (Sampler::new(reference), Sampler::new(extended));
+    let mut any_extension = false;
+    for i in 0..50 {
+        let d: Design = plain.sample(&mut sample_rng(7, i));
+        let e: Design = wide.sample(&mut sample_rng(7, i));
+        assert_eq!(d.extension, Extension::defaults());
+        assert_eq!(Design { extension: Extension::defaults(), ..e.clone() }, d);
+        any_extension |= e.extension != Extension::defaults();
+    }
+    assert!(any_extension);
+}
