@@ -5,8 +5,7 @@
 //! the ends of pleat lines on the outline notches.
 
 use super::geom::{self, Xf};
-use super::piece::{Grained, slit};
-use super::types::Notch;
+use super::types::{Grained, Notch, slit};
 use crate::math::Vec2;
 use crate::pattern::{HoleKind, LineKind, PanelSpec};
 

@@ -93,7 +93,8 @@ mod tests;
 
 pub use dxf::{DxfBlock, DxfDrawing, DxfEntity, read_dxf};
 pub use grade::{SIZE_RUN_FILE_NAMES, size_run_files};
-pub use piece::{CURVE_STEP, GATHER_RATIO, MATCH_SPACING, NOTCH_LENGTH, stitch_fractions};
+pub use piece::{CURVE_STEP, GATHER_RATIO, MATCH_SPACING, stitch_fractions};
+pub use types::NOTCH_LENGTH;
 
 pub use types::{Cut, EdgeSeam, Notch, Paper, Piece, PrintOptions};
 

@@ -2,7 +2,7 @@
 //! cut count and labels, each piece in its own frame with the grain pointing up.
 
 use super::geom::{self, OffsetEdge, Rect, Xf};
-use super::types::{Cut, Notch, Piece, PrintOptions};
+use super::types::{Cut, Grained, Notch, Piece, PrintOptions, slit};
 use crate::edge::{Curve, Edge, Segment};
 use crate::error::{Error, Result};
 use crate::math::{Vec2, Vec3};
@@ -16,9 +16,6 @@ pub const CURVE_STEP: f64 = 0.25;
 /// Seams longer than this get match notches along them (one per this many cm).
 pub const MATCH_SPACING: f64 = 15.0;
 
-/// Length of a notch slit into the seam allowance (cm).
-pub const NOTCH_LENGTH: f64 = 0.6;
-
 /// Stitched edges whose lengths differ by more than this fraction are gathered.
 pub const GATHER_RATIO: f64 = 0.05;
 
@@ -27,18 +24,6 @@ type PanelEdge = (String, usize);
 
 /// Tolerance of the shape comparisons that find mirrored and repeated panels (cm).
 const SAME_SHAPE: f64 = 0.05;
-
-/// One panel in its grain frame (grain along +y, sew-line box from the origin).
-pub(crate) struct Grained {
-    /// The panel's edges in the grain frame.
-    pub edges: Vec<Edge>,
-    /// Local panel coordinates → grain frame.
-    pub xf: Xf,
-    /// The outline runs counter-clockwise.
-    pub ccw: bool,
-    /// Sew-line bounding box width.
-    pub width: f64,
-}
 
 /// Points of an edge at `t ∈ [0, 1)` (the end point belongs to the next edge).
 fn edge_params(e: &Edge) -> Vec<f64> {
@@ -325,15 +310,6 @@ pub(crate) fn panel_notches(
         }
     }
     out
-}
-
-/// The slit of a notch at `at` whose outer end is the cut line's point nearest to
-/// `at + reach`: [`NOTCH_LENGTH`] from the cut line inwards (at most to the sew line).
-pub(super) fn slit(at: Vec2, reach: Vec2, cut: &[Vec2], edges: Vec<(String, usize)>) -> Notch {
-    let outer = geom::nearest_on_closed(at + reach, cut);
-    let len = (outer - at).length();
-    let inward = (at - outer).normalize_or_zero();
-    Notch { sew: at, outer, inner: outer + inward * NOTCH_LENGTH.min(len), edges }
 }
 
 /// A point well inside a polygon and its distance to the outline: of the grid

@@ -1,6 +1,7 @@
 //! The pattern pieces and the print options: the types of [`super`].
 
-use super::geom::Xf;
+use super::geom::{self, Xf};
+use crate::edge::Edge;
 use crate::error::{Error, Result};
 use crate::math::Vec2;
 
@@ -233,4 +234,28 @@ pub struct Piece {
     pub text_size: f64,
     /// Label lines: name, garment, size, cut count, grainline.
     pub labels: Vec<String>,
+}
+
+/// Length of a notch slit into the seam allowance (cm).
+pub const NOTCH_LENGTH: f64 = 0.6;
+
+/// One panel in its grain frame (grain along +y, sew-line box from the origin).
+pub(crate) struct Grained {
+    /// The panel's edges in the grain frame.
+    pub edges: Vec<Edge>,
+    /// Local panel coordinates → grain frame.
+    pub xf: Xf,
+    /// The outline runs counter-clockwise.
+    pub ccw: bool,
+    /// Sew-line bounding box width.
+    pub width: f64,
+}
+
+/// The slit of a notch at `at` whose outer end is the cut line's point nearest to
+/// `at + reach`: [`NOTCH_LENGTH`] from the cut line inwards (at most to the sew line).
+pub(super) fn slit(at: Vec2, reach: Vec2, cut: &[Vec2], edges: Vec<(String, usize)>) -> Notch {
+    let outer = geom::nearest_on_closed(at + reach, cut);
+    let len = (outer - at).length();
+    let inward = (at - outer).normalize_or_zero();
+    Notch { sew: at, outer, inner: outer + inward * NOTCH_LENGTH.min(len), edges }
 }

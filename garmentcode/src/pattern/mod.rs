@@ -13,7 +13,6 @@ use crate::arc;
 use crate::edge::{Curve, Edge};
 use crate::math::Vec2;
 use crate::rotation::Rotation;
-pub use extension::{EXTENSION_VERSION, EdgePlace, Hole, HoleKind, InnerLine, InnerSide, InnerStitch, Layer, LineKind};
 
 /// A whole sewing pattern.
 ///
@@ -332,3 +331,113 @@ pub(crate) fn edge_geometry(vertices: &[[f64; 2]], e: &EdgeSpec) -> Edge {
     };
     Edge { start: s, end: t, curve }
 }
+
+// The format extension's types (see `extension.rs` for what they mean and their methods).
+
+/// A closed loop of edges inside a panel's outline.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Hole {
+    /// Name, unique among the panel's holes and lines.
+    pub name: String,
+    /// What the loop is: cut out, or a dart sewn closed.
+    pub kind: HoleKind,
+    /// Panel-local vertices (cm).
+    pub vertices: Vec<[f64; 2]>,
+    /// The loop's edges in order; the last ends where the first starts.
+    pub edges: Vec<EdgeSpec>,
+}
+
+/// What a [`Hole`] is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum HoleKind {
+    /// Cut out of the fabric (a keyhole, a welt-pocket opening): an internal cut-out on
+    /// prints, an opening in the mesh.
+    Cut,
+    /// A dart inside the panel (a diamond dart): its sides are sewn together, the
+    /// fabric between them is folded away. Printed as marked lines with drill holes, an
+    /// opening in the mesh whose sides are stitched.
+    Dart,
+}
+
+/// An open line of edges inside a panel (not on its outline).
+#[derive(Clone, Debug, PartialEq)]
+pub struct InnerLine {
+    /// Name, unique among the panel's holes and lines.
+    pub name: String,
+    /// What the line is for.
+    pub kind: LineKind,
+    /// Panel-local vertices (cm).
+    pub vertices: Vec<[f64; 2]>,
+    /// The line's edges in order, each starting where the one before ends.
+    pub edges: Vec<EdgeSpec>,
+}
+
+/// What an [`InnerLine`] is for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LineKind {
+    /// The panel is folded along the line (a one-piece sleeve, a double cuff or
+    /// turtleneck folded along its middle): the AAMA mirror line on prints, a row of
+    /// mesh edges. `angle` is the fold's dihedral turn in degrees at which the box mesh
+    /// places the side of the panel to the line's right (0: flat; 180: folded flat
+    /// over the left side).
+    Fold {
+        /// Turn of the right side about the line, degrees, 0 to 180.
+        angle: f64,
+    },
+    /// Where a piece sewn on top goes (a patch pocket, a flounce): an internal line
+    /// on prints with drill holes at its corners, a row of mesh edges that stitches
+    /// may use.
+    Placement,
+    /// The fold of a pleat (the edge of the fabric that is folded over).
+    PleatFold,
+    /// Where a pleat's fold is laid down.
+    PleatPlacement,
+}
+
+/// Which layer of a double-layer component a panel is.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Layer {
+    /// The outside (every panel of the reference's format).
+    #[default]
+    Outer,
+    /// A facing: the inside layer of a collar, cuff or neckline, joined to the outer
+    /// layer along edges.
+    Facing,
+    /// A lining.
+    Lining,
+}
+
+/// Where a stitched edge lies in its panel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum EdgePlace {
+    /// On the outline (`edges`).
+    Outline,
+    /// On the panel's hole with this index.
+    Hole(usize),
+    /// On the panel's inner line with this index.
+    Line(usize),
+}
+
+/// One side of an [`InnerStitch`].
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct InnerSide {
+    /// Panel name.
+    pub panel: String,
+    /// Outline, hole or line of the panel.
+    pub place: EdgePlace,
+    /// Edge index in that outline, hole or line.
+    pub edge: usize,
+}
+
+/// A stitch with at least one side on a hole or an inner line (stitches between
+/// outline edges only are [`StitchSpec`]s, as the reference has them).
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub struct InnerStitch {
+    /// Both sides.
+    pub sides: [InnerSide; 2],
+    /// One fabric is flipped.
+    pub right_wrong: bool,
+}
+
+/// Version of the format extension this code writes (`properties.extension_version`).
+pub const EXTENSION_VERSION: u32 = 1;
