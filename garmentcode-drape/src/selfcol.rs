@@ -83,6 +83,58 @@ struct NearLists {
     fast_face: Vec<bool>,
     fast_faces: Vec<usize>,
     fast_bvh: Bvh,
+    /// The cells of a coarse grid that the boxes of those faces meet: a search box meeting
+    /// none of them meets none of those faces.
+    fast_cells: Grid,
+}
+
+/// A coarse grid of cells over a box, each marked or not.
+struct Grid {
+    lo: Vec3,
+    cell: f64,
+    dims: [usize; 3],
+    marked: Vec<bool>,
+}
+
+impl Grid {
+    /// Cells of about 2 cm (at most 64 a side) over the box `[lo, hi]`, none marked.
+    fn new(lo: Vec3, hi: Vec3) -> Grid {
+        let cell = ((hi - lo).max_element() / 64.0).max(2.0);
+        let dims = ((hi - lo) / cell).to_array().map(|d| d as usize + 1);
+        Grid { lo, cell, dims, marked: vec![false; dims[0] * dims[1] * dims[2]] }
+    }
+
+    /// The cells of the box `[lo, hi]` (clipped to the grid): lowest and highest indices.
+    fn range(&self, lo: Vec3, hi: Vec3) -> [[usize; 3]; 2] {
+        let index = |p: Vec3| {
+            let c = (p - self.lo) / self.cell;
+            [0, 1, 2].map(|k| (c[k].max(0.0) as usize).min(self.dims[k] - 1))
+        };
+        [index(lo), index(hi)]
+    }
+
+    /// Calls `f(cell)` for every cell of the box `[lo, hi]`, until it returns true; whether it did.
+    fn any(&self, lo: Vec3, hi: Vec3, mut f: impl FnMut(usize) -> bool) -> bool {
+        let [a, b] = self.range(lo, hi);
+        (a[0]..=b[0]).any(|i| (a[1]..=b[1]).any(|j| (a[2]..=b[2]).any(|k| f((i * self.dims[1] + j) * self.dims[2] + k))))
+    }
+
+    /// Marks the cells of the box `[lo, hi]`.
+    fn mark(&mut self, lo: Vec3, hi: Vec3) {
+        let mut cells = Vec::new();
+        self.any(lo, hi, |c| {
+            cells.push(c);
+            false
+        });
+        for c in cells {
+            self.marked[c] = true;
+        }
+    }
+
+    /// Whether a cell of the box `[lo, hi]` is marked.
+    fn meets(&self, lo: Vec3, hi: Vec3) -> bool {
+        self.any(lo, hi, |c| self.marked[c])
+    }
 }
 
 /// Closest points of segments `p1–q1` and `p2–q2` as parameters `(s, t)` along them, and
@@ -198,6 +250,7 @@ impl SelfCollision {
                 fast_face: Vec::new(),
                 fast_faces: Vec::new(),
                 fast_bvh: Bvh::new(&[]),
+                fast_cells: Grid::new(Vec3::ZERO, Vec3::ZERO),
             });
             if self.spring_of.len() != n {
                 self.spring_of = vec![usize::MAX; n];
@@ -216,6 +269,14 @@ impl SelfCollision {
             near.fast_faces.extend((0..self.faces.len()).filter(|&f| near.fast_face[f]));
             let tris: Vec<[Vec3; 3]> = near.fast_faces.iter().map(|&f| self.tris[f]).collect();
             near.fast_bvh = Bvh::new(&tris);
+            let bounds = |t: &[Vec3; 3]| (t[0].min(t[1]).min(t[2]), t[0].max(t[1]).max(t[2]));
+            let (lo, hi) =
+                self.tris.iter().map(bounds).fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), (a, b)| (lo.min(a), hi.max(b)));
+            near.fast_cells = Grid::new(lo, hi);
+            for t in &tris {
+                let (a, b) = bounds(t);
+                near.fast_cells.mark(a, b);
+            }
         }
     }
 
@@ -231,7 +292,9 @@ impl SelfCollision {
         });
         let Some((near, s)) = near else { return self.bvh.for_each_in_box(lo, hi, hit) };
         let mut moved = Vec::new();
-        near.fast_bvh.for_each_in_box(lo, hi, |k| moved.push(near.fast_faces[k]));
+        if near.fast_cells.meets(lo, hi) {
+            near.fast_bvh.for_each_in_box(lo, hi, |k| moved.push(near.fast_faces[k]));
+        }
         moved.sort_unstable_by_key(|&f| self.ranks[f]);
         let mut moved = moved.into_iter().peekable();
         for &f in &near.faces[near.start[s]..near.start[s + 1]] {
