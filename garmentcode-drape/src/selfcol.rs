@@ -3,10 +3,11 @@
 //! look-ahead), then projected in every substep. Edges that already cross the garment
 //! exempt their ends from new contacts, so existing crossings are not locked in.
 //!
-//! The searches ask which faces are near each spring. Once the garment moves slowly, the
-//! faces near each spring are listed with a margin ([`NearLists`], a Verlet list) and the
-//! following frames test only those, plus the few faces that have moved too far since: the
-//! same faces in the same order as the tree search, so the same contacts, bit for bit.
+//! The searches ask which faces are near each spring: the tree is searched once per spring
+//! and frame ([`NearLists`]), and once the garment moves slowly, with a margin, so that the
+//! following frames test only the faces listed then, plus the few faces that have moved too
+//! far since (a Verlet list): the same faces in the same order as the tree search, so the
+//! same contacts, bit for bit.
 
 use garmentcode::Vec3;
 
@@ -54,6 +55,8 @@ pub(crate) struct SelfCollision {
     last_x: Vec<Vec3>,
     /// Per particle, a spring it ends (`usize::MAX` for none).
     spring_of: Vec<usize>,
+    /// Whether to list the faces near each spring (else every search is a tree search).
+    lists: bool,
 }
 
 /// How far (cm) beyond its search cube the faces near a spring are listed. A face whose box
@@ -66,10 +69,16 @@ const SKIN: f64 = 0.4;
 /// searched for in the tree again.
 const MOVED: f64 = SKIN / 4.0;
 
+/// The margin of lists made for one frame only (cm): rounding.
+const ONCE: f64 = 1e-6;
+
 /// The faces near each spring (the faces whose boxes met its search cube grown by [`SKIN`]
 /// when the lists were made), kept while at most a tenth of the particles have moved more
-/// than [`MOVED`] since.
+/// than [`MOVED`] since; while the garment moves faster, made again every frame, without
+/// the margin.
 struct NearLists {
+    /// The margin they were made with: [`SKIN`], or [`ONCE`] for lists of one frame.
+    skin: f64,
     /// Positions when the lists were made.
     anchor: Vec<Vec3>,
     /// Ends of each spring.
@@ -207,6 +216,7 @@ impl SelfCollision {
             near: None,
             last_x: Vec::new(),
             spring_of: Vec::new(),
+            lists: true,
         }
     }
 
@@ -219,15 +229,20 @@ impl SelfCollision {
             for (i, fast) in near.fast.iter_mut().enumerate() {
                 *fast = moved(&near.anchor, i);
             }
-            if near.fast.iter().filter(|&&f| f).count() * 10 > n {
+            if near.skin < SKIN || near.fast.iter().filter(|&&f| f).count() * 10 > n {
                 self.near = None;
             }
-        } else if self.last_x.len() == n && (0..n).filter(|&i| moved(&self.last_x, i)).count() * 10 <= n {
-            // Slow enough since the last frame: list the faces near each spring.
+        }
+        if self.near.is_none() && self.lists {
+            // List the faces near each spring: with the margin when the garment moved slowly
+            // since the last frame, else for this frame only (one search per spring serves the
+            // crossing, point and edge searches).
+            let slow = self.last_x.len() == n && (0..n).filter(|&i| moved(&self.last_x, i)).count() * 10 <= n;
+            let skin = if slow { SKIN } else { ONCE };
             let lists = par::chunks(threads, edges.len(), |range| {
                 let (mut counts, mut faces) = (Vec::with_capacity(range.len()), Vec::new());
                 for &([a, b], _) in &edges[range] {
-                    let (lo, hi) = cube(x[a], x[b], 3.0 * r + SKIN);
+                    let (lo, hi) = cube(x[a], x[b], 3.0 * r + skin);
                     let before = faces.len();
                     self.bvh.for_each_in_box(lo, hi, |f| faces.push(f as u32));
                     counts.push(faces.len() - before);
@@ -242,6 +257,7 @@ impl SelfCollision {
                 }
             }
             self.near = Some(NearLists {
+                skin,
                 anchor: x.to_vec(),
                 ends: edges.iter().map(|&(e, _)| e).collect(),
                 start,
@@ -532,8 +548,11 @@ impl SelfCollision {
 mod tests {
     use super::*;
 
+    /// Faces, positions, springs.
+    type Sheets = (Vec<[usize; 3]>, Vec<Vec3>, Vec<([usize; 2], f64)>);
+
     /// Two 12 × 12 cm sheets of 1 cm squares, one 0.2 cm above the other and shifted, gently waved.
-    fn sheets() -> (Vec<[usize; 3]>, Vec<Vec3>, Vec<([usize; 2], f64)>) {
+    fn sheets() -> Sheets {
         let (mut faces, mut x, mut edges) = (Vec::new(), Vec::new(), Vec::new());
         let side = 13;
         for sheet in 0..2 {
@@ -569,8 +588,9 @@ mod tests {
         let n = x0.len();
         let (v, inv_mass) = (vec![Vec3::new(0.0, -1.0, 0.0); n], vec![10.0; n]);
         let step = (Vec3::new(0.0, -981.0, 0.0), 1.0 / 60.0, 0.1);
-        // Frame by frame: small moves, then a few particles moving far (searched in the tree
-        // again, the others from the lists), then too many (the lists dropped).
+        // Frame by frame: lists for one frame, then small moves (lists kept), then a few
+        // particles moving far (searched in the tree again, the others from the lists), then
+        // too many (lists for one frame again).
         let frame = |k: usize| -> Vec<Vec3> {
             x0.iter()
                 .enumerate()
@@ -585,12 +605,17 @@ mod tests {
             let x = frame(k);
             listed.detect(&x, &v, &inv_mass, &edges, step, true, 2);
             match k {
-                0 => assert!(listed.near.is_none()),
-                1 | 2 => assert!(listed.near.as_ref().is_some_and(|l| l.fast_faces.is_empty())),
-                3 => assert!(listed.near.as_ref().is_some_and(|l| !l.fast_faces.is_empty() && l.fast_faces.len() < faces.len() / 2)),
-                _ => assert!(listed.near.is_none()),
+                0 | 4 => assert!(listed.near.as_ref().is_some_and(|l| l.skin == ONCE)),
+                1 | 2 => assert!(listed.near.as_ref().is_some_and(|l| l.skin == SKIN && l.fast_faces.is_empty())),
+                _ => assert!(
+                    listed
+                        .near
+                        .as_ref()
+                        .is_some_and(|l| l.skin == SKIN && !l.fast_faces.is_empty() && l.fast_faces.len() < faces.len() / 2)
+                ),
             }
             let mut tree = SelfCollision::new(faces.clone(), &x0);
+            tree.lists = false;
             tree.detect(&x, &v, &inv_mass, &edges, step, true, 1);
             assert!(tree.near.is_none());
             assert!(!tree.point_triangle.is_empty() && !tree.edge_edge.is_empty(), "frame {k}: some contacts");
