@@ -1,13 +1,16 @@
 //! The drape's cost: `cargo bench -p garmentcode-drape`.
 //!
 //! Prints, for garments of growing size (the waistband, then reference cases of 6,000 to
-//! 11,000 vertices, on the built-in `mean_all` body), the CPU time of the drape thread and
-//! the peak resident memory of a process doing only that drape (built-in body included),
-//! over the first 60 frames, and per vertex and frame, to show how both grow with the
-//! number of particles; then the whole t-shirt drape (the target: at most 5 s) with
-//! its frames and the reference's 276 CPU s beside it.
+//! 11,000 vertices, on the built-in `mean_all` body), the CPU time (all threads) and the
+//! peak resident memory of a process doing only that drape (built-in body included), over
+//! the first 60 frames, and per vertex and frame, to show how both grow with the number of
+//! particles; then the whole t-shirt drape (the target: at most 5 s) with its wall
+//! and CPU seconds, its frames and the reference's 276 CPU s beside it. Drapes run on all
+//! the machine's threads (`DRAPE_BENCH_THREADS=N` for N).
 
-use cpu_time::ThreadTime;
+use std::time::Instant;
+
+use cpu_time::ProcessTime;
 
 use garmentcode::mesh::{BoxMesh, DEFAULT_RESOLUTION};
 use garmentcode_drape::{BodyMesh, Settings, drape};
@@ -26,7 +29,7 @@ fn peak_kb() -> Option<usize> {
 }
 
 /// Drapes `case` for `frames` frames (0: to the end) in this process and prints
-/// `vertices frames cpu_seconds peak_kB self_crossings converged`.
+/// `vertices frames cpu_seconds wall_seconds peak_kB self_crossings converged`.
 fn child(case: &str, frames: usize) {
     let body = BodyMesh::builtin("mean_all").expect("built-in body");
     let measurements = garmentcode::Body::from_yaml(include_str!("../tests/data/mean_all.yaml"), "mean_all.yaml").expect("body");
@@ -35,24 +38,26 @@ fn child(case: &str, frames: usize) {
     if frames > 0 {
         settings.max_frames = frames;
     }
-    let cpu = ThreadTime::now();
+    settings.threads = std::env::var("DRAPE_BENCH_THREADS").ok().and_then(|t| t.parse().ok()).unwrap_or(0);
+    let (cpu, wall) = (ProcessTime::now(), Instant::now());
     let result = drape(&mesh, &body, &settings).expect("drape");
-    let seconds = cpu.elapsed().as_secs_f64();
+    let (seconds, wall) = (cpu.elapsed().as_secs_f64(), wall.elapsed().as_secs_f64());
     let s = result.stats;
-    println!("{} {} {seconds} {} {} {}", mesh.vertices.len(), s.frames, peak_kb().unwrap_or(0), s.self_intersections, s.converged);
+    println!("{} {} {seconds} {wall} {} {} {}", mesh.vertices.len(), s.frames, peak_kb().unwrap_or(0), s.self_intersections, s.converged);
 }
 
 /// Runs [`child`] in a new process of this benchmark (so that the peak memory is this
 /// drape's alone) and returns its figures.
-fn run(case: &str, frames: usize) -> (usize, usize, f64, usize, usize, bool) {
+fn run(case: &str, frames: usize) -> (usize, usize, f64, f64, usize, usize, bool) {
     let out = std::process::Command::new(std::env::current_exe().expect("benchmark path"))
         .env("DRAPE_BENCH_CASE", format!("{case}:{frames}"))
         .output()
         .expect("benchmark child");
     let text = String::from_utf8_lossy(&out.stdout);
     let w: Vec<&str> = text.split_whitespace().collect();
-    assert!(out.status.success() && w.len() == 6, "drape of {case} failed: {text} {}", String::from_utf8_lossy(&out.stderr));
-    (w[0].parse().unwrap(), w[1].parse().unwrap(), w[2].parse().unwrap(), w[3].parse().unwrap(), w[4].parse().unwrap(), w[5] == "true")
+    assert!(out.status.success() && w.len() == 7, "drape of {case} failed: {text} {}", String::from_utf8_lossy(&out.stderr));
+    let number = |k: usize| w[k].parse::<f64>().unwrap();
+    (number(0) as usize, number(1) as usize, number(2), number(3), number(4) as usize, number(5) as usize, w[6] == "true")
 }
 
 fn main() {
@@ -68,7 +73,7 @@ fn main() {
     println!("growth with the number of particles (first 60 frames, one process per garment):");
     println!("{:<18} {:>9} {:>8} {:>13} {:>16} {:>13}", "garment", "vertices", "CPU s", "peak RSS MB", "µs/vertex/frame", "kB/vertex");
     for case in ["case-001", "case-021", "t-shirt-mean_all", "case-036", "case-026", "case-031"] {
-        let (n, frames, seconds, peak, _, _) = run(case, 60);
+        let (n, frames, seconds, _, peak, _, _) = run(case, 60);
         println!(
             "{case:<18} {n:>9} {seconds:>8.2} {:>13.1} {:>16.2} {:>13.1}",
             peak as f64 / 1e3,
@@ -76,9 +81,9 @@ fn main() {
             peak as f64 / n as f64
         );
     }
-    let (n, frames, seconds, peak, crossings, converged) = run("t-shirt-mean_all", 0);
+    let (n, frames, seconds, wall, peak, crossings, converged) = run("t-shirt-mean_all", 0);
     println!(
-        "t-shirt drape: {n} vertices, {frames} frames, {seconds:.1} CPU s (target 5 s; the reference's simulator: 276 CPU s), peak RSS {:.1} MB, {crossings} self-crossing edges, converged: {converged}",
+        "t-shirt drape: {n} vertices, {frames} frames, {wall:.1} s wall, {seconds:.1} CPU s (target 5 s; the reference's simulator: 276 CPU s), peak RSS {:.1} MB, {crossings} self-crossing edges, converged: {converged}",
         peak as f64 / 1e3
     );
 }

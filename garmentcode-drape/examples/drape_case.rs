@@ -5,6 +5,8 @@
 //!
 //! `BODY.obj` may also be the name of a built-in body (`mean_all`, ...): its mesh and parts.
 //!
+//! `DRAPE_THREADS=N` runs on N threads (default: all; the positions do not depend on it).
+//!
 //! Experiments: `DRAPE_SELF_COLLISION=0` turns self-collision off; `DRAPE_JITTER=CM` moves
 //! the interior vertices of every panel by up to CM in the panel's plane; `DRAPE_BOXMESH=CASE_DIR`
 //! drapes the reference's own box mesh of a case folder instead of ours (its
@@ -44,6 +46,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut settings = Settings::for_body(&measurements).with_panel_labels(&pattern);
     if let Some(frames) = rest.first() {
         settings.max_frames = frames.parse()?;
+    }
+    if let Some(threads) = std::env::var("DRAPE_THREADS").ok().and_then(|t| t.parse().ok()) {
+        settings.threads = threads;
     }
     if std::env::var("DRAPE_SELF_COLLISION").is_ok_and(|v| v == "0") {
         settings.self_collision = false;

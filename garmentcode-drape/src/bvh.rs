@@ -73,6 +73,9 @@ impl Bvh {
             order: (0..tris.len() as u32).collect(),
             boxes: vec![(Vec3::ZERO, Vec3::ZERO); tris.len()],
         };
+        if tris.is_empty() {
+            return bvh;
+        }
         let centroids: Vec<Vec3> = tris.iter().map(|t| (t[0] + t[1] + t[2]) / 3.0).collect();
         bvh.nodes.push(Node { lo: Vec3::ZERO, hi: Vec3::ZERO, start: 0, count: 0 });
         bvh.build(0, 0, tris.len(), &centroids);
@@ -184,8 +187,17 @@ impl Bvh {
         !(b_hi.cmplt(lo).any() || b_lo.cmpgt(hi).any())
     }
 
+    /// Each triangle's place in the tree's order (the order of [`Bvh::for_each_in_box`]).
+    pub fn ranks(&self) -> Vec<u32> {
+        let mut rank = vec![0; self.order.len()];
+        for (k, &i) in self.order.iter().enumerate() {
+            rank[i as usize] = k as u32;
+        }
+        rank
+    }
+
     /// Calls `hit(face)` for every triangle whose box (as of the last refit) meets the box
-    /// `[lo, hi]`, in the tree's order.
+    /// `[lo, hi]`, in the tree's order (leaves left to right: increasing [`Bvh::ranks`]).
     pub fn for_each_in_box(&self, lo: Vec3, hi: Vec3, mut hit: impl FnMut(usize)) {
         if self.nodes.is_empty() {
             return;
@@ -310,18 +322,24 @@ mod tests {
             assert!((hit.dist2 - brute).abs() < 1e-12, "{p}: {} vs {brute}", hit.dist2);
         }
         assert!(bvh.closest(&tris, Vec3::new(5.0, 100.0, 5.0), 1.0).is_none());
+        // An empty tree finds nothing.
+        let empty = Bvh::new(&[]);
+        assert!(empty.closest(&[], Vec3::ZERO, f64::INFINITY).is_none());
+        empty.for_each_in_box(Vec3::splat(-1.0), Vec3::ONE, |_| panic!("no triangle"));
     }
 
     #[test]
     fn box_queries_report_exactly_the_triangles_whose_boxes_meet() {
         let tris = grid();
         let bvh = Bvh::new(&tris);
+        let ranks = bvh.ranks();
         for k in 0..100 {
             let f = k as f64;
             let c = Vec3::new((f * 0.37) % 12.0 - 1.0, (f * 0.53) % 3.0 - 1.0, (f * 0.71) % 12.0 - 1.0);
             let (lo, hi) = (c - Vec3::splat(0.3 + f * 0.01), c + Vec3::splat(0.3 + f * 0.01));
             let mut found = Vec::new();
             bvh.for_each_in_box(lo, hi, |i| found.push(i));
+            assert!(found.windows(2).all(|w| ranks[w[0]] < ranks[w[1]]), "in the tree's order");
             found.sort_unstable();
             let brute: Vec<usize> = (0..tris.len())
                 .filter(|&i| {

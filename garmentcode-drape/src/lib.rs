@@ -27,6 +27,7 @@ mod check;
 pub mod fabric;
 mod glb;
 pub mod mannequin;
+mod par;
 mod parts;
 pub mod render;
 mod selfcol;

@@ -13,8 +13,10 @@
 //! then 10 substeps each predict (gravity after the zero-gravity frames, velocity-dependent
 //! damping, velocity cap), project every constraint against the same prediction, add the
 //! corrections and derive velocities. The run stops when the garment is static (after the
-//! attachment frames) or at the frame limit. All in `f64`, single-threaded, in a fixed
-//! order: the same inputs give the same positions, bit for bit.
+//! attachment frames) or at the frame limit. All in `f64`, in a fixed order: the contact
+//! searches and the constraint projections run on several threads (see `par`), each item
+//! computed alone and the results added in item order, so the same inputs give the same
+//! positions, bit for bit, whatever the number of threads.
 //!
 //! Self-collision follows the reference too (see `selfcol`), and so, on a body with a part
 //! segmentation, do the assignment of panels to body parts, the drag of crossing panels
@@ -31,6 +33,7 @@ use garmentcode::Vec3;
 use garmentcode::mesh::{BoxMesh, VertexLabel};
 
 use crate::body::BodyMesh;
+use crate::par;
 use crate::parts::Parts;
 use crate::selfcol::SelfCollision;
 
@@ -113,6 +116,8 @@ pub struct Settings {
     /// Point–triangle and edge–edge self-collision (`enable_triangle_particle_collisions`,
     /// `enable_edge_edge_collisions`).
     pub self_collision: bool,
+    /// Threads to run on (0: as many as the machine has). The positions do not depend on it.
+    pub threads: usize,
 }
 
 impl Default for Settings {
@@ -144,6 +149,7 @@ impl Default for Settings {
             non_static_percent: 1.5,
             body_drag: true,
             self_collision: true,
+            threads: 0,
             reference_margin: 0.1,
             panel_labels: BTreeMap::new(),
         }
@@ -226,6 +232,9 @@ impl Settings {
         if !(1..=100).contains(&self.substeps) {
             return bad("substeps", self.substeps as f64, "an integer in 1..=100");
         }
+        if self.threads > MAX_THREADS {
+            return bad("threads", self.threads as f64, "an integer in 0..=256 (0: all the machine's)");
+        }
         if !(1..=MAX_FRAMES).contains(&self.max_frames) {
             return bad("max_frames", self.max_frames as f64, "an integer in 1..=100000");
         }
@@ -257,6 +266,9 @@ impl Settings {
 
 /// Most frames a drape may ask for.
 pub const MAX_FRAMES: usize = 100_000;
+
+/// Most threads a drape may ask for.
+pub const MAX_THREADS: usize = 256;
 
 /// Why a drape could not run.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -309,6 +321,7 @@ pub struct Drape {
 }
 
 /// A body contact found at the start of a frame: particle, plane normal, point of the offset surface.
+#[derive(Clone, Copy)]
 struct Contact {
     particle: usize,
     normal: Vec3,
@@ -502,6 +515,7 @@ pub fn drape_with_progress(
     // 0: no drag; 1: crossing a panel of another part, onto its own part; 2: inside the body, out.
     let mut drag = vec![0u8; n];
     let mut dragged: Vec<usize> = Vec::new();
+    let threads = par::threads(settings.threads);
     let mut self_collision = (settings.self_collision || (parts.is_some() && settings.body_drag))
         .then(|| SelfCollision::new(mesh.faces.iter().map(|f| f.vertices).collect(), &x));
     let (mut frames, mut converged, mut non_static) = (0, false, 0);
@@ -509,37 +523,56 @@ pub fn drape_with_progress(
     for frame in 0..settings.max_frames {
         let g = if frame >= settings.zero_gravity_frames { Vec3::new(0.0, -settings.gravity, 0.0) } else { Vec3::ZERO };
         let attached = frame < settings.attachment_frames;
-        // Body contacts on the frame-start positions.
+        // Body contacts on the frame-start positions: the queries on all threads, their
+        // outcomes applied in particle order.
         contacts.clear();
         drag.fill(0);
-        for i in 0..n {
-            let p = x[i];
-            if let Some((anchor, room)) = clear[i]
-                && (p - anchor).length() < room
-            {
-                continue;
-            }
-            let bound = last_point[i].map_or(f64::INFINITY, |q| {
-                let d = (p - q).length() * (1.0 + 1e-12) + 1e-9;
-                d * d
-            });
-            let Some(hit) = body.closest(p, bound).or_else(|| body.closest(p, f64::INFINITY)) else { continue };
-            last_point[i] = Some(hit.point);
-            clear[i] = (hit.signed > band).then_some((p, hit.signed - band));
-            if parts.as_ref().is_some_and(|parts| parts.hides(i, hit.face)) {
-                continue;
-            }
-            let d = hit.signed - settings.body_thickness;
-            if -settings.contact_margin < d && d < settings.contact_margin + r {
-                let dir = (p - hit.point).normalize_or_zero();
-                let normal = if dir == Vec3::ZERO { hit.normal.normalize_or_zero() } else { dir * hit.signed.signum() };
-                contacts.push(Contact { particle: i, normal, point: p - normal * d });
-            } else if d < -settings.contact_margin && settings.body_drag {
-                drag[i] = 2;
+        let queries = par::flat(threads, n, |range| {
+            range
+                .filter_map(|i| {
+                    let p = x[i];
+                    if let Some((anchor, room)) = clear[i]
+                        && (p - anchor).length() < room
+                    {
+                        return None;
+                    }
+                    let bound = last_point[i].map_or(f64::INFINITY, |q| {
+                        let d = (p - q).length() * (1.0 + 1e-12) + 1e-9;
+                        d * d
+                    });
+                    let hit = body.closest(p, bound).or_else(|| body.closest(p, f64::INFINITY))?;
+                    let mut query = BodyQuery {
+                        particle: i,
+                        point: hit.point,
+                        clear: (hit.signed > band).then_some((p, hit.signed - band)),
+                        contact: None,
+                        inside: false,
+                    };
+                    if parts.as_ref().is_some_and(|parts| parts.hides(i, hit.face)) {
+                        return Some(query);
+                    }
+                    let d = hit.signed - settings.body_thickness;
+                    if -settings.contact_margin < d && d < settings.contact_margin + r {
+                        let dir = (p - hit.point).normalize_or_zero();
+                        let normal = if dir == Vec3::ZERO { hit.normal.normalize_or_zero() } else { dir * hit.signed.signum() };
+                        query.contact = Some(Contact { particle: i, normal, point: p - normal * d });
+                    } else {
+                        query.inside = d < -settings.contact_margin && settings.body_drag;
+                    }
+                    Some(query)
+                })
+                .collect()
+        });
+        for q in &queries {
+            last_point[q.particle] = Some(q.point);
+            clear[q.particle] = q.clear;
+            contacts.extend(q.contact);
+            if q.inside {
+                drag[q.particle] = 2;
             }
         }
         if let Some(sc) = &mut self_collision {
-            sc.detect(&x, &v, &cloth.inv_mass, &cloth.springs, (g, 1.0 / settings.fps, r), settings.self_collision);
+            sc.detect(&x, &v, &cloth.inv_mass, &cloth.springs, (g, 1.0 / settings.fps, r), settings.self_collision, threads);
             if let (Some(parts), true) = (&parts, settings.body_drag) {
                 for &(k, l, face) in &sc.crossings {
                     let face_label = sc.faces()[face].iter().find_map(|&i| parts.label[i]);
@@ -602,52 +635,28 @@ pub fn drape_with_progress(
             if let Some(sc) = &self_collision {
                 sc.project(&x, &cloth.inv_mass, r, &mut delta);
             }
-            // Springs.
-            for &([i, j], rest) in &cloth.springs {
-                let d = x[i] - x[j];
-                let l = d.length();
-                if l == 0.0 {
-                    continue;
+            // Springs and bending: the corrections on all threads, added in constraint order.
+            let corrections = par::chunks(threads, cloth.springs.len().max(cloth.bends.len()), |range| {
+                let springs = &cloth.springs[range.start.min(cloth.springs.len())..range.end.min(cloth.springs.len())];
+                let bends = &cloth.bends[range.start.min(cloth.bends.len())..range.end.min(cloth.bends.len())];
+                let springs: Vec<_> =
+                    springs.iter().map(|&(ends, rest)| spring_correction(&cloth, spring, dt, (&x, &v), ends, rest)).collect();
+                let bends: Vec<_> = bends.iter().map(|&b| bend_correction(&cloth, bend, dt, (&x, &v), b)).collect();
+                (springs, bends)
+            });
+            for (&([i, j], _), c) in cloth.springs.iter().zip(corrections.iter().flat_map(|(s, _)| s)) {
+                if let Some([di, dj]) = *c {
+                    delta[i] += di;
+                    delta[j] -= dj;
                 }
-                let nrm = d / l;
-                let (wi, wj) = (cloth.inv_mass[i], cloth.inv_mass[j]);
-                let c = l - rest;
-                let damp = spring.gamma * dt * nrm.dot(v[i] - v[j]);
-                let dl = -(c + damp) / ((1.0 + spring.gamma) * (wi + wj) + spring.alpha);
-                delta[i] += nrm * (wi * dl);
-                delta[j] -= nrm * (wj * dl);
             }
-            // Bending towards flat.
-            for &[i, j, k, l] in &cloth.bends {
-                let (x1, x2, x3, x4) = (x[i], x[j], x[k], x[l]);
-                let n1 = (x3 - x1).cross(x4 - x1);
-                let n2 = (x4 - x2).cross(x3 - x2);
-                let (l1, l2) = (n1.length(), n2.length());
-                if l1 < 1e-6 || l2 < 1e-6 {
-                    continue;
+            for (&[i, j, k, l], c) in cloth.bends.iter().zip(corrections.iter().flat_map(|(_, b)| b)) {
+                if let Some([di, dj, dk, dl]) = *c {
+                    delta[i] += di;
+                    delta[j] += dj;
+                    delta[k] += dk;
+                    delta[l] += dl;
                 }
-                let (n1, n2) = (n1 / l1, n2 / l2);
-                let e = x4 - x3;
-                let e_len = e.length();
-                let e_hat = e.normalize_or_zero();
-                let flip = -sign(n1.cross(n2).dot(e));
-                let angle = n1.dot(n2).clamp(-1.0, 1.0).acos();
-                let g1 = n1 * e_len * flip;
-                let g2 = n2 * e_len * flip;
-                let g3 = (n1 * (x1 - x4).dot(e_hat) + n2 * (x2 - x4).dot(e_hat)) * flip;
-                let g4 = (n1 * (x3 - x1).dot(e_hat) + n2 * (x3 - x2).dot(e_hat)) * flip;
-                let w = [cloth.inv_mass[i], cloth.inv_mass[j], cloth.inv_mass[k], cloth.inv_mass[l]];
-                let denom =
-                    w[0] * g1.length_squared() + w[1] * g2.length_squared() + w[2] * g3.length_squared() + w[3] * g4.length_squared();
-                if denom <= 0.0 {
-                    continue;
-                }
-                let damp = bend.gamma * dt * (g1.dot(v[i]) + g2.dot(v[j]) + g3.dot(v[k]) + g4.dot(v[l]));
-                let dl = -(angle + damp) / ((1.0 + bend.gamma) * denom + bend.alpha);
-                delta[i] += g1 * (w[0] * dl);
-                delta[j] += g2 * (w[1] * dl);
-                delta[k] += g3 * (w[2] * dl);
-                delta[l] += g4 * (w[3] * dl);
             }
             // Attachments: one-sided planes.
             if attached {
@@ -700,6 +709,71 @@ pub fn drape_with_progress(
             self_intersections,
         },
     })
+}
+
+/// What a body query of a particle found at the start of a frame.
+struct BodyQuery {
+    particle: usize,
+    /// The closest body point.
+    point: Vec3,
+    /// Where the particle was, and how far it may move from there without meeting the body.
+    clear: Option<(Vec3, f64)>,
+    contact: Option<Contact>,
+    /// Inside the body, beyond the contact band (to be dragged out).
+    inside: bool,
+}
+
+/// The corrections of spring `i–j` of rest length `rest` at predicted positions and
+/// velocities `(x, v)`: `delta[i] += c[0]`, `delta[j] -= c[1]` (`None` for a spring of length 0).
+fn spring_correction(
+    cloth: &Cloth,
+    spring: Compliance,
+    dt: f64,
+    (x, v): (&[Vec3], &[Vec3]),
+    [i, j]: [usize; 2],
+    rest: f64,
+) -> Option<[Vec3; 2]> {
+    let d = x[i] - x[j];
+    let l = d.length();
+    if l == 0.0 {
+        return None;
+    }
+    let nrm = d / l;
+    let (wi, wj) = (cloth.inv_mass[i], cloth.inv_mass[j]);
+    let c = l - rest;
+    let damp = spring.gamma * dt * nrm.dot(v[i] - v[j]);
+    let dl = -(c + damp) / ((1.0 + spring.gamma) * (wi + wj) + spring.alpha);
+    Some([nrm * (wi * dl), nrm * (wj * dl)])
+}
+
+/// The corrections of bending element `(o0, o1, v0, v1)` towards flat, added to the four
+/// particles in that order (`None` for a degenerate element).
+fn bend_correction(cloth: &Cloth, bend: Compliance, dt: f64, (x, v): (&[Vec3], &[Vec3]), [i, j, k, l]: [usize; 4]) -> Option<[Vec3; 4]> {
+    let (x1, x2, x3, x4) = (x[i], x[j], x[k], x[l]);
+    let n1 = (x3 - x1).cross(x4 - x1);
+    let n2 = (x4 - x2).cross(x3 - x2);
+    let (l1, l2) = (n1.length(), n2.length());
+    if l1 < 1e-6 || l2 < 1e-6 {
+        return None;
+    }
+    let (n1, n2) = (n1 / l1, n2 / l2);
+    let e = x4 - x3;
+    let e_len = e.length();
+    let e_hat = e.normalize_or_zero();
+    let flip = -sign(n1.cross(n2).dot(e));
+    let angle = n1.dot(n2).clamp(-1.0, 1.0).acos();
+    let g1 = n1 * e_len * flip;
+    let g2 = n2 * e_len * flip;
+    let g3 = (n1 * (x1 - x4).dot(e_hat) + n2 * (x2 - x4).dot(e_hat)) * flip;
+    let g4 = (n1 * (x3 - x1).dot(e_hat) + n2 * (x3 - x2).dot(e_hat)) * flip;
+    let w = [cloth.inv_mass[i], cloth.inv_mass[j], cloth.inv_mass[k], cloth.inv_mass[l]];
+    let denom = w[0] * g1.length_squared() + w[1] * g2.length_squared() + w[2] * g3.length_squared() + w[3] * g4.length_squared();
+    if denom <= 0.0 {
+        return None;
+    }
+    let damp = bend.gamma * dt * (g1.dot(v[i]) + g2.dot(v[j]) + g3.dot(v[k]) + g4.dot(v[l]));
+    let dl = -(angle + damp) / ((1.0 + bend.gamma) * denom + bend.alpha);
+    Some([g1 * (w[0] * dl), g2 * (w[1] * dl), g3 * (w[2] * dl), g4 * (w[3] * dl)])
 }
 
 /// Warp's `sign`: −1 for negative, else 1.

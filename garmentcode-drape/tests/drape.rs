@@ -65,15 +65,18 @@ fn waistband_drapes_onto_the_waist_like_the_reference() {
 }
 
 #[test]
-fn same_inputs_give_the_same_bytes() {
+fn same_inputs_give_the_same_bytes_whatever_the_threads() {
     let (pattern, mesh) = box_mesh(include_str!("data/waistband_specification.json"));
     let body = BodyMesh::builtin("mean_all").unwrap();
-    let settings = Settings { max_frames: 40, ..settings(&pattern) };
-    let a = drape(&mesh, &body, &settings).unwrap();
-    let b = drape(&mesh, &body, &settings).unwrap();
+    let settings = |threads| Settings { max_frames: 40, threads, ..settings(&pattern) };
+    let a = drape(&mesh, &body, &settings(1)).unwrap();
     assert_eq!(a.stats.frames, 40);
     assert!(!a.stats.converged);
-    assert_eq!(sim_obj(&mesh, &a.positions), sim_obj(&mesh, &b.positions));
+    for threads in [1, 2, 3] {
+        let b = drape(&mesh, &body, &settings(threads)).unwrap();
+        assert_eq!(sim_obj(&mesh, &a.positions), sim_obj(&mesh, &b.positions), "{threads} threads");
+        assert_eq!((a.stats.self_intersections, a.stats.body_penetrations), (b.stats.self_intersections, b.stats.body_penetrations));
+    }
     // The garment moved: the seams pulled in.
     assert_ne!(a.positions, mesh.vertices);
 }
@@ -99,6 +102,8 @@ fn settings_out_of_range_are_refused_with_their_name_and_range() {
     assert!(err.to_string().contains("1..=100000"), "{err}");
     let err = drape(&mesh, &body, &Settings { spring_ke: f64::NAN, ..settings(&pattern) }).unwrap_err();
     assert!(err.to_string().contains("spring_ke"), "{err}");
+    let err = drape(&mesh, &body, &Settings { threads: 1000, ..settings(&pattern) }).unwrap_err();
+    assert!(err.to_string().contains("threads = 1000: must be an integer in 0..=256"), "{err}");
     let mut bad = settings(&pattern);
     bad.attachments[0].normal = Vec3::new(0.0, 2.0, 0.0);
     let err = drape(&mesh, &body, &bad).unwrap_err();
