@@ -76,6 +76,7 @@ fn add_drape(
         fabric: &fabric,
         max_frames: args.sim.max_frames.map(|n| n as usize),
         max_seconds: args.sim.max_seconds,
+        threads: 0,
     };
     let mut progress = ProgressLine::new(false);
     let draped = drape_files(pattern, &mesh, &setup, |p| progress.frame(p));

@@ -39,6 +39,9 @@ pub struct DrapeSetup<'a> {
     pub max_frames: Option<usize>,
     /// Time limit of the simulation (s).
     pub max_seconds: f64,
+    /// Threads of the simulation (0: every core; 1 when drapes run side by side, as
+    /// `sample --jobs J` does). The result does not depend on it.
+    pub threads: usize,
 }
 
 /// A finished drape: its files and figures.
@@ -60,6 +63,7 @@ fn settings(pattern: &garmentcode::Pattern, setup: &DrapeSetup) -> Settings {
     if let Some(n) = setup.max_frames {
         s.max_frames = n;
     }
+    s.threads = setup.threads;
     s
 }
 
@@ -293,6 +297,7 @@ pub fn run(args: DrapeArgs) -> Result<i32, CliError> {
         fabric: &fabric,
         max_frames: args.sim.max_frames.map(|n| n as usize),
         max_seconds: args.sim.max_seconds,
+        threads: 0,
     };
     let mut progress = ProgressLine::new(args.quiet);
     let draped = drape_files(&pattern, &mesh, &setup, |p| progress.frame(p));

@@ -273,7 +273,11 @@ pub fn run_reporting(args: SampleArgs, mut report: Option<Report>, quiet: bool) 
         }
         false => None,
     };
-    let settings = Settings::new(&sampler, opts.formats, drape);
+    let mut settings = Settings::new(&sampler, opts.formats, drape);
+    if let Some(config) = settings.drape.as_mut() {
+        // Jobs drape side by side: one thread each, or they would compete for the cores.
+        config.threads = usize::from(opts.jobs > 1);
+    }
     if let Some(config) = &settings.drape {
         for (b, meshes) in config.meshes.iter().enumerate() {
             if let Err(e) = &meshes[0] {
@@ -585,6 +589,7 @@ fn replay_drape(
         fabric: &fabric,
         max_frames: opts.sim.max_frames.map(|n| n as usize),
         max_seconds: opts.sim.max_seconds,
+        threads: 0,
     };
     let mut progress = drape::ProgressLine::new(false);
     let draped = drape::drape_files(pattern, mesh, &setup, |p| progress.frame(p));

@@ -129,6 +129,8 @@ pub struct DrapeConfig {
     pub max_frames: Option<usize>,
     /// Time limit of one simulation (s).
     pub max_seconds: f64,
+    /// Threads of each drape (0: every core; 1 with several jobs).
+    pub threads: usize,
     /// Per body of the sampler, the mesh to drape on without and with pants (as the
     /// measurements differ), or why there is none.
     pub meshes: Vec<[Result<garmentcode_drape::BodyMesh, String>; 2]>,
@@ -179,7 +181,7 @@ impl<'a> Settings<'a> {
                     })
                 })
                 .collect();
-            DrapeConfig { fabric, max_frames, max_seconds, meshes }
+            DrapeConfig { fabric, max_frames, max_seconds, threads: 0, meshes }
         });
         Settings { sampler, fingerprint, formats, writer: DesignWriter::new(sampler.space()), body_files, drape }
     }
@@ -342,6 +344,7 @@ fn drape_sample(
         fabric: &config.fabric,
         max_frames: config.max_frames,
         max_seconds: config.max_seconds,
+        threads: config.threads,
     };
     crate::commands::drape::drape_files(&sample.built.pattern, mesh, &setup, |_| {}).map_err(|e| ("crashes", e))
 }
