@@ -22,6 +22,11 @@ fn renamed(p: &Pattern, tag: &str) -> String {
             side.panel = format!("{tag}{}", side.panel);
         }
     }
+    for s in &mut q.inner_stitches {
+        for side in &mut s.sides {
+            side.panel = format!("{tag}{}", side.panel);
+        }
+    }
     q.to_json().unwrap()
 }
 
@@ -51,5 +56,6 @@ fn a_copied_garment_assembles_to_the_same_pattern() {
         let original = garment.assemble(&mut a, name).unwrap();
         assert_eq!(renamed(&original, "copy_"), renamed(&copied, ""), "{name}");
         assert_eq!(original.stitches.len(), copied.stitches.len());
+        assert_eq!(original.inner_stitches.len(), copied.inner_stitches.len());
     }
 }
