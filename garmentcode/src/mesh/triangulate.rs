@@ -30,7 +30,7 @@
 
 use std::collections::VecDeque;
 
-use spade::handles::{FixedFaceHandle, InnerTag};
+use spade::handles::FixedVertexHandle;
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
 use crate::Vec2;
@@ -108,35 +108,46 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, 
         (cdt, handle.iter().map(|h| h.index()).collect(), crossing)
     };
 
-    // Split inside edges longer than the size bound (never outline edges) at their midpoints.
+    // Split inside edges longer than the size bound (never outline edges) at their
+    // midpoints: first those of every inside face, then, round after round, those at the
+    // vertices the last round added (every other edge was there before, short). An added
+    // vertex and the faces its insertion makes or changes are inside (its cavity never
+    // crosses a constraint), so the faces outside stay as they were.
     let budget = cdt.num_vertices() + 4 * boundary.len() + 1000;
-    let mut inside = inside_faces(&cdt);
-    for _ in 0..8 {
-        let mut splits: Vec<Point2<f64>> = Vec::new();
-        for f in &inside {
-            for e in cdt.face(*f).adjacent_edges() {
-                if e.is_constraint_edge() || e.length_2() <= max_len * max_len {
-                    continue;
-                }
-                // Each undirected edge once: from its lower-index end, or from its only inside face.
-                let [a, b] = [e.from(), e.to()];
-                if a.fix().index() < b.fix().index() || e.rev().face().as_inner().is_none() {
-                    let (pa, pb) = (a.position(), b.position());
-                    splits.push(Point2::new((pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0));
-                }
+    let mut is_inside = inside_faces(&cdt);
+    let mut splits: Vec<Point2<f64>> = Vec::new();
+    for f in cdt.inner_faces().filter(|f| is_inside[f.fix().index()]) {
+        for e in f.adjacent_edges() {
+            // Each undirected edge once: from its lower-index end, or from its only inside face.
+            let [a, b] = [e.from().fix().index(), e.to().fix().index()];
+            if !e.is_constraint_edge() && e.length_2() > max_len * max_len && (a < b || e.rev().face().as_inner().is_none()) {
+                splits.push(midpoint(e.from().position(), e.to().position()));
             }
         }
-        if splits.is_empty() {
+    }
+    for round in 1.. {
+        if splits.is_empty() || round > 8 {
             break;
         }
         if cdt.num_vertices() + splits.len() > budget {
             return Err("triangulation exceeds its size budget".into());
         }
-        for p in splits {
+        let first_added = cdt.num_vertices();
+        for p in splits.drain(..) {
             cdt.insert(p).map_err(|e| format!("refinement point cannot be inserted: {e:?}"))?;
         }
-        inside = inside_faces(&cdt);
+        for v in first_added..cdt.num_vertices() {
+            for e in cdt.vertex(FixedVertexHandle::from_index(v)).out_edges() {
+                // Between two added vertices, from the lower-index one.
+                let to = e.to().fix().index();
+                if !e.is_constraint_edge() && e.length_2() > max_len * max_len && (to < first_added || to > v) {
+                    splits.push(midpoint(e.from().position(), e.to().position()));
+                }
+            }
+        }
     }
+    is_inside.resize(cdt.num_all_faces(), true);
+    let inside: Vec<_> = cdt.inner_faces().filter(|f| is_inside[f.fix().index()]).collect();
 
     // Spade vertex index → output index: boundary vertices keep theirs, added vertices
     // used by inside faces are numbered after them in insertion order.
@@ -148,7 +159,7 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, 
     }
     let mut used = vec![false; cdt.num_vertices()];
     for f in &inside {
-        for v in cdt.face(*f).vertices() {
+        for v in f.vertices() {
             used[v.fix().index()] = true;
         }
     }
@@ -166,7 +177,7 @@ pub(crate) fn triangulate(boundary: &[Vec2], segments: &[[usize; 2]], res: f64, 
             points.push(Vec2::new(p.x, p.y));
         }
     }
-    let mut faces: Vec<[usize; 3]> = inside.iter().map(|f| cdt.face(*f).vertices().map(|v| map[v.fix().index()])).collect();
+    let mut faces: Vec<[usize; 3]> = inside.iter().map(|f| f.vertices().map(|v| map[v.fix().index()])).collect();
     if !crossing.is_empty() {
         // Crossings mapped onto segment starts collapse or repeat faces.
         let mut seen = std::collections::HashSet::new();
@@ -448,9 +459,9 @@ fn add_outline(cdt: &mut Cdt, handle: &[spade::handles::FixedVertexHandle], segm
     crossing
 }
 
-/// Inner faces inside the outline by the even–odd rule: a face's level is the number of
-/// constraints crossed on the way from the outer face; odd levels are inside.
-fn inside_faces(cdt: &Cdt) -> Vec<FixedFaceHandle<InnerTag>> {
+/// Which faces (by index) are inside the outline by the even–odd rule: a face's level is
+/// the number of constraints crossed on the way from the outer face; odd levels are inside.
+fn inside_faces(cdt: &Cdt) -> Vec<bool> {
     let n = cdt.num_all_faces();
     let mut parity: Vec<Option<bool>> = vec![None; n];
     let mut queue = VecDeque::new();
@@ -476,7 +487,12 @@ fn inside_faces(cdt: &Cdt) -> Vec<FixedFaceHandle<InnerTag>> {
             }
         }
     }
-    cdt.inner_faces().filter(|f| parity[f.fix().index()] == Some(true)).map(|f| f.fix()).collect()
+    parity.into_iter().map(|p| p == Some(true)).collect()
+}
+
+/// The middle of `a` and `b`.
+fn midpoint(a: Point2<f64>, b: Point2<f64>) -> Point2<f64> {
+    Point2::new((a.x + b.x) / 2.0, (a.y + b.y) / 2.0)
 }
 
 /// A fixed pseudo-random offset of at most 0.1% of `scale` per coordinate, keyed by `a`
