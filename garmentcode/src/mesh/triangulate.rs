@@ -8,7 +8,7 @@
 //!   rest lengths of gathered seams depend on those triangles' shape), unless it comes
 //!   close to the outline or to another row point (narrow parts, corners);
 //! - **blue noise**: a fixed tile of Poisson-disk points (no two closer than
-//!   [`NOISE_DISTANCE`]`·res`, made once from a fixed seed) repeated over the panel,
+//!   `0.7·res`, made by dart throwing from a fixed seed and stored) repeated over the panel,
 //!   kept inside the outline by the even–odd rule and at least
 //!   [`BOUNDARY_CLEARANCE`]`·res` farther from the outline than the row.
 //!
@@ -35,6 +35,8 @@ use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
 use crate::Vec2;
 
+mod noise_tile;
+
 /// Hash maps of the mesher: fast, fixed-seed hashing of small integer keys.
 pub(crate) type HashMap<K, V> = std::collections::HashMap<K, V, foldhash::fast::FixedState>;
 
@@ -44,6 +46,7 @@ type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
 pub const SIZE_BOUND: f64 = 1.43;
 
 /// Least distance between two noise points, in units of the resolution.
+#[cfg(test)]
 const NOISE_DISTANCE: f64 = 0.7;
 
 /// Side of the square tile of noise points repeated over the panel, in units of the resolution.
@@ -304,7 +307,7 @@ fn blue_noise(
     Ok(points)
 }
 
-/// A square of blue noise (Poisson-disk points: no two closer than [`NOISE_DISTANCE`],
+/// A square of blue noise (Poisson-disk points: no two closer than `NOISE_DISTANCE`,
 /// every spot within about that distance of one), [`TILE_SIDE`] on a side in units of the
 /// resolution and periodic, so that copies side by side join seamlessly; its points are
 /// cut into bands of [`BAND`], each sorted by x.
@@ -312,57 +315,13 @@ struct NoiseTile {
     bands: Vec<Vec<Vec2>>,
 }
 
-/// The tile, made once by dart throwing on the torus (Bridson's algorithm) from a fixed
-/// seed: the same points on every run and every thread.
+/// The tile: its points ([`noise_tile::POINTS`], made by dart throwing, see
+/// `dart_throwing`) sorted into bands once.
 fn noise_tile() -> &'static NoiseTile {
     static TILE: std::sync::OnceLock<NoiseTile> = std::sync::OnceLock::new();
     TILE.get_or_init(|| {
-        let (side, r) = (TILE_SIDE, NOISE_DISTANCE);
-        // Background grid of cells r/√2 (at most one point each), on the torus.
-        let n = (side / (r / 2f64.sqrt())).floor() as usize;
-        let cell = side / n as f64;
-        let mut cells: Vec<Option<Vec2>> = vec![None; n * n];
-        let cell_of = |p: Vec2| ((p.x / cell) as usize % n, (p.y / cell) as usize % n);
-        let wrap = |d: f64| d - side * (d / side).round();
-        let mut draws = 0u64;
-        let mut random = || {
-            draws += 1;
-            hashed(draws, 0x5EED)
-        };
-        let first = random() * side;
-        let mut points = vec![first];
-        let (c, r0) = cell_of(first);
-        cells[r0 * n + c] = Some(first);
-        let mut active = vec![0usize];
-        while !active.is_empty() {
-            let pick = ((random().x * active.len() as f64) as usize).min(active.len() - 1);
-            let centre = points[active[pick]];
-            let found = (0..30).find_map(|_| {
-                // A candidate in the annulus between r and 2r around the centre.
-                let u = random();
-                let (radius, angle) = (r * (1.0 + 3.0 * u.x).sqrt(), std::f64::consts::TAU * u.y);
-                let q = centre + Vec2::new(radius * angle.cos(), radius * angle.sin());
-                let q = Vec2::new(q.x.rem_euclid(side), q.y.rem_euclid(side));
-                let (cx, cy) = cell_of(q);
-                let free = (0..5).all(|dy| {
-                    (0..5).all(|dx| {
-                        let k = ((cy + n + dy - 2) % n) * n + (cx + n + dx - 2) % n;
-                        cells[k].is_none_or(|p| Vec2::new(wrap(p.x - q.x), wrap(p.y - q.y)).length() >= r)
-                    })
-                });
-                free.then_some((q, cx, cy))
-            });
-            match found {
-                Some((q, cx, cy)) => {
-                    cells[cy * n + cx] = Some(q);
-                    active.push(points.len());
-                    points.push(q);
-                }
-                None => {
-                    active.swap_remove(pick);
-                }
-            }
-        }
+        let side = TILE_SIDE;
+        let points = noise_tile::POINTS.iter().map(|&[x, y]| Vec2::new(x, y));
         let n_bands = (side / BAND).round() as usize;
         let mut bands = vec![Vec::new(); n_bands];
         for p in points {
@@ -557,6 +516,71 @@ fn segment_distance(p: Vec2, a: Vec2, b: Vec2) -> f64 {
     (p - (a + t * d)).length()
 }
 
+/// Blue noise on the torus of side [`TILE_SIDE`] by dart throwing (Bridson's algorithm)
+/// from a fixed seed: points no closer than `NOISE_DISTANCE`, each tried 30 times for a
+/// neighbour in the annulus between that distance and twice it. It made
+/// [`noise_tile::POINTS`] (a test checks that it still does): the tile is stored, since
+/// making it (about 3 ms) costs more than meshing a small garment.
+#[cfg(test)]
+fn dart_throwing() -> Vec<Vec2> {
+    let (side, r) = (TILE_SIDE, NOISE_DISTANCE);
+    // Background grid of cells r/√2 (at most one point each), on the torus.
+    let n = (side / (r / 2f64.sqrt())).floor() as usize;
+    let cell = side / n as f64;
+    let mut cells: Vec<Option<Vec2>> = vec![None; n * n];
+    let cell_of = |p: Vec2| ((p.x / cell) as usize % n, (p.y / cell) as usize % n);
+    // The cell `i − 2` on the torus, for `i` in `0..n + 4`; the shortest offset on the torus.
+    let around: Vec<usize> = (0..n + 4).map(|i| (i + n - 2) % n).collect();
+    let wrap = |d: f64| {
+        if d > side / 2.0 {
+            d - side
+        } else if d < -side / 2.0 {
+            d + side
+        } else {
+            d
+        }
+    };
+    let mut draws = 0u64;
+    let mut random = || {
+        draws += 1;
+        hashed(draws, 0x5EED)
+    };
+    let first = random() * side;
+    let mut points = vec![first];
+    let (c, r0) = cell_of(first);
+    cells[r0 * n + c] = Some(first);
+    let mut active = vec![0usize];
+    while !active.is_empty() {
+        let pick = ((random().x * active.len() as f64) as usize).min(active.len() - 1);
+        let centre = points[active[pick]];
+        let found = (0..30).find_map(|_| {
+            // A candidate in the annulus between r and 2r around the centre.
+            let u = random();
+            let (radius, angle) = (r * (1.0 + 3.0 * u.x).sqrt(), std::f64::consts::TAU * u.y);
+            let q = centre + Vec2::new(radius * angle.cos(), radius * angle.sin());
+            let q = Vec2::new(q.x.rem_euclid(side), q.y.rem_euclid(side));
+            let (cx, cy) = cell_of(q);
+            let free = around[cy..cy + 5].iter().all(|&row| {
+                around[cx..cx + 5].iter().all(|&column| {
+                    cells[row * n + column].is_none_or(|p| Vec2::new(wrap(p.x - q.x), wrap(p.y - q.y)).length_squared() >= r * r)
+                })
+            });
+            free.then_some((q, cx, cy))
+        });
+        match found {
+            Some((q, cx, cy)) => {
+                cells[cy * n + cx] = Some(q);
+                active.push(points.len());
+                points.push(q);
+            }
+            None => {
+                active.swap_remove(pick);
+            }
+        }
+    }
+    points
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -635,5 +659,13 @@ mod tests {
             let spot = Vec2::new((k % 48) as f64, (k / 48) as f64) * (TILE_SIDE / 48.0);
             assert!(points.iter().any(|p| dist(*p, spot) < 2.0 * NOISE_DISTANCE), "{spot:?}");
         }
+    }
+
+    /// The stored tile is what the dart throwing makes, bit for bit.
+    #[test]
+    fn the_stored_tile_is_the_dart_throwings() {
+        let made: Vec<[u64; 2]> = dart_throwing().iter().map(|p| [p.x.to_bits(), p.y.to_bits()]).collect();
+        let stored: Vec<[u64; 2]> = noise_tile::POINTS.iter().map(|p| p.map(f64::to_bits)).collect();
+        assert_eq!(made, stored);
     }
 }
