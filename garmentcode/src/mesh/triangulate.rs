@@ -1,5 +1,5 @@
-//! Triangulation of one panel: interior points laid out in advance, a constrained
-//! Delaunay triangulation (by `spade`) only where the layout needs one.
+//! Triangulation of one panel: interior points laid out in advance, then one constrained
+//! Delaunay triangulation (by `spade`, bulk-loaded) of the outline and those points.
 //!
 //! The sampled outline is never split: the boundary stays exactly the sampled
 //! polyline. Inside it go
@@ -7,30 +7,35 @@
 //!   inside, so that the triangles on the outline are about isosceles (the reference's
 //!   rest lengths of gathered seams depend on those triangles' shape), unless it comes
 //!   close to the outline or to another row point (narrow parts, corners);
-//! - an equilateral **lattice** of spacing [`LATTICE_SPACING`]`·res`, clipped to the
-//!   panel by the even–odd rule, at least [`BOUNDARY_CLEARANCE`]`·res` farther from the
-//!   outline than the row. Its triangles are output as they are.
+//! - **blue noise**: a fixed tile of Poisson-disk points (no two closer than
+//!   `0.7·res`, made by dart throwing from a fixed seed and stored) repeated over the panel,
+//!   kept inside the outline by the even–odd rule and at least
+//!   [`BOUNDARY_CLEARANCE`]`·res` farther from the outline than the row.
 //!
-//! The constrained triangulation covers the strip between the outline and the lattice's
-//! triangles: its points are the outline, the row and the lattice points on the border
-//! of the lattice's triangles (or in none of them), its constraints the outline and
-//! that border, so that by the even–odd rule the strip is inside and the lattice's
-//! triangles are not (an outline that crosses itself or repeats a point is inserted
-//! constraint by constraint instead, crossings becoming vertices, and every interior
-//! point into the triangulation). Strip edges still longer than the size bound are split
-//! at their midpoints until every edge is at most `1.43·res`, the reference mesher's size
-//! criterion.
+//! The outline is the triangulation's constraints and the even–odd rule decides what is
+//! inside (an outline that crosses itself or repeats a point is inserted constraint by
+//! constraint instead, crossings becoming vertices). Edges still longer than the size
+//! bound are split at their midpoints until every edge is at most `1.43·res`, the
+//! reference mesher's size criterion.
 //!
-//! This replaces quality refinement (spade's `refine`, Ruppert-style, which locates and
-//! tests every candidate point): a lattice is already a quality mesh, and a bulk load of
-//! the strip's few points is a fraction of the work.
+//! Why noise: the reference's mesher (CGAL's Delaunay refinement) makes an irregular
+//! interior, whose edges run in every direction. An equilateral lattice (this module's
+//! first interior) puts every edge in three directions along straight lines, which a
+//! cloth of nearly no bending stiffness folds along like hinges: draped, the t-shirt's
+//! panels folded through themselves (`docs/drape.md`). The Delaunay triangulation of
+//! blue noise has the refinement's character (edges of 0.8 to 1.4 `res` in every
+//! direction, about the same number of points) without its search for bad triangles
+//! (spade's `refine`, Ruppert-style, locates and tests every candidate point; laying out
+//! the points and bulk loading them is a fraction of that work).
 
 use std::collections::VecDeque;
 
-use spade::handles::{FixedFaceHandle, InnerTag};
+use spade::handles::FixedVertexHandle;
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
 use crate::Vec2;
+
+mod noise_tile;
 
 /// Hash maps of the mesher: fast, fixed-seed hashing of small integer keys.
 pub(crate) type HashMap<K, V> = std::collections::HashMap<K, V, foldhash::fast::FixedState>;
@@ -40,10 +45,18 @@ type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
 /// Size bound of triangle edges, in units of the resolution.
 pub const SIZE_BOUND: f64 = 1.43;
 
-/// Spacing of the interior lattice, in units of the resolution.
-const LATTICE_SPACING: f64 = 1.0;
+/// Least distance between two noise points, in units of the resolution.
+#[cfg(test)]
+const NOISE_DISTANCE: f64 = 0.7;
 
-/// Least distance of a lattice point from the row along the outline, in units of the resolution.
+/// Side of the square tile of noise points repeated over the panel, in units of the resolution.
+const TILE_SIDE: f64 = 24.0;
+
+/// Height of the bands the noise points are sorted into, in units of the resolution
+/// (a whole fraction of [`TILE_SIDE`]).
+const BAND: f64 = 0.5;
+
+/// Least distance of a noise point from the row along the outline, in units of the resolution.
 const BOUNDARY_CLEARANCE: f64 = 0.4;
 
 /// Height of the row of points along the outline, in units of the resolution.
@@ -64,7 +77,7 @@ pub(crate) struct PanelTriangulation {
 
 /// Triangulates the region bounded by `segments` between `boundary` points, with the
 /// open `lines` between them (inner lines of the format extension) as rows of edges
-/// inside it that bound nothing. At most `max_interior` lattice points are laid out (an
+/// inside it that bound nothing. At most `max_interior` noise points are laid out (an
 /// error past that).
 pub(crate) fn triangulate(
     boundary: &[Vec2],
@@ -75,57 +88,43 @@ pub(crate) fn triangulate(
 ) -> Result<PanelTriangulation, String> {
     let max_len = SIZE_BOUND * res;
     // A resolution beyond the panel's size lays out points as for the panel's size (no
-    // lattice, a row within the panel's reach), never at astronomical distances.
+    // noise, a row within the panel's reach), never at astronomical distances.
     let (lo, hi) =
         boundary.iter().fold((Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY)), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
     let layout_res = res.min((hi - lo).length());
-    let (row, lattice) = interior_points(boundary, segments, lines, layout_res, max_interior)?;
-    // The lattice's own triangles are kept as they are; the Delaunay triangulation only
-    // fills the strip between the outline and them (the outline, the row, the lattice
-    // points on the strip's inner border or in no lattice triangle), with the border's
-    // edges as constraints: by the even–odd rule the strip is inside and the lattice's
-    // triangles are not.
-    let (lattice_faces, border) = lattice.triangles();
-    let mut in_cdt = vec![true; lattice.points.len()];
-    lattice_faces.iter().flatten().for_each(|&i| in_cdt[i] = false);
-    border.iter().flatten().for_each(|&i| in_cdt[i] = true);
+    let (row, noise) = interior_points(boundary, segments, lines, layout_res, max_interior)?;
     // The outline is triangulated nudged too (equal points equally), and kept exact in the
     // output; by at most 0.1% of its spacing, which is below `res` when `res` exceeds the panel.
     let nudged: Vec<Vec2> = boundary.iter().map(|p| *p + nudge(p.x.to_bits(), p.y.to_bits(), layout_res)).collect();
-    let mut all: Vec<Point2<f64>> = nudged.iter().chain(&row).map(|p| Point2::new(p.x, p.y)).collect();
-    let mut cdt_index = vec![usize::MAX; lattice.points.len()];
-    for (i, p) in lattice.points.iter().enumerate() {
-        if in_cdt[i] {
-            cdt_index[i] = all.len();
-            all.push(Point2::new(p.x, p.y));
-        }
-    }
+    let all: Vec<Point2<f64>> = nudged.iter().chain(&row).chain(&noise).map(|p| Point2::new(p.x, p.y)).collect();
     let n_bulk = all.len();
-    let mut edges: Vec<[usize; 2]> = segments.iter().chain(lines).copied().filter(|[a, b]| a != b).collect();
-    edges.extend(border.iter().map(|e| e.map(|i| cdt_index[i])));
+    let edges: Vec<[usize; 2]> = segments.iter().chain(lines).copied().filter(|[a, b]| a != b).collect();
     let mut conflicts = false;
     let bulk = Cdt::try_bulk_load_cdt(all, edges, |_| conflicts = true).map_err(|e| format!("panel cannot be triangulated: {e:?}"))?;
     // Bulk loading keeps the vertex order unless points repeat: then, and for crossing
     // outlines, the outline goes in constraint by constraint and every interior point
     // into the triangulation.
-    let (mut cdt, handle, crossing, lattice_faces) = if !conflicts && bulk.num_vertices() == n_bulk {
-        (bulk, (0..boundary.len()).collect::<Vec<usize>>(), HashMap::default(), lattice_faces)
+    let (mut cdt, handle, crossing) = if !conflicts && bulk.num_vertices() == n_bulk {
+        (bulk, (0..boundary.len()).collect::<Vec<usize>>(), HashMap::default())
     } else {
         let mut cdt = Cdt::new();
         let mut handle = Vec::with_capacity(boundary.len());
         for p in &nudged {
             handle.push(cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("point ({}, {}) cannot be triangulated: {e:?}", p.x, p.y))?);
         }
-        let all: Vec<[usize; 2]> = segments.iter().chain(lines).copied().collect();
-        let crossing = add_outline(&mut cdt, &handle, &all);
-        for p in row.iter().chain(&lattice.points) {
+        let constraints: Vec<[usize; 2]> = segments.iter().chain(lines).copied().collect();
+        let crossing = add_outline(&mut cdt, &handle, &constraints);
+        for p in row.iter().chain(&noise) {
             cdt.insert(Point2::new(p.x, p.y)).map_err(|e| format!("interior point cannot be inserted: {e:?}"))?;
         }
-        cdt_index.clear();
-        (cdt, handle.iter().map(|h| h.index()).collect(), crossing, Vec::new())
+        (cdt, handle.iter().map(|h| h.index()).collect(), crossing)
     };
 
-    // Split inside edges longer than the size bound (never outline edges) at their midpoints.
+    // Split inside edges longer than the size bound (never outline edges) at their
+    // midpoints: first those of every inside face, then, round after round, those at the
+    // vertices the last round added (every other edge was there before, short). An added
+    // vertex and the faces its insertion makes or changes are inside (its cavity never
+    // crosses a constraint), so the faces outside stay as they were.
     let budget = cdt.num_vertices() + 4 * boundary.len() + 1000;
     // The lines' constraints, which bound nothing (spade vertex indices, low first).
     let line_edges: std::collections::HashSet<[usize; 2]> = lines
@@ -135,33 +134,40 @@ pub(crate) fn triangulate(
             [x.min(y), x.max(y)]
         })
         .collect();
-    let mut inside = inside_faces(&cdt, &line_edges);
-    for _ in 0..8 {
-        let mut splits: Vec<Point2<f64>> = Vec::new();
-        for f in &inside {
-            for e in cdt.face(*f).adjacent_edges() {
-                if e.is_constraint_edge() || e.length_2() <= max_len * max_len {
-                    continue;
-                }
-                // Each undirected edge once: from its lower-index end, or from its only inside face.
-                let [a, b] = [e.from(), e.to()];
-                if a.fix().index() < b.fix().index() || e.rev().face().as_inner().is_none() {
-                    let (pa, pb) = (a.position(), b.position());
-                    splits.push(Point2::new((pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0));
-                }
+    let mut is_inside = inside_faces(&cdt, &line_edges);
+    let mut splits: Vec<Point2<f64>> = Vec::new();
+    for f in cdt.inner_faces().filter(|f| is_inside[f.fix().index()]) {
+        for e in f.adjacent_edges() {
+            // Each undirected edge once: from its lower-index end, or from its only inside face.
+            let [a, b] = [e.from().fix().index(), e.to().fix().index()];
+            if !e.is_constraint_edge() && e.length_2() > max_len * max_len && (a < b || e.rev().face().as_inner().is_none()) {
+                splits.push(midpoint(e.from().position(), e.to().position()));
             }
         }
-        if splits.is_empty() {
+    }
+    for round in 1.. {
+        if splits.is_empty() || round > 8 {
             break;
         }
         if cdt.num_vertices() + splits.len() > budget {
             return Err("triangulation exceeds its size budget".into());
         }
-        for p in splits {
+        let first_added = cdt.num_vertices();
+        for p in splits.drain(..) {
             cdt.insert(p).map_err(|e| format!("refinement point cannot be inserted: {e:?}"))?;
         }
-        inside = inside_faces(&cdt, &line_edges);
+        for v in first_added..cdt.num_vertices() {
+            for e in cdt.vertex(FixedVertexHandle::from_index(v)).out_edges() {
+                // Between two added vertices, from the lower-index one.
+                let to = e.to().fix().index();
+                if !e.is_constraint_edge() && e.length_2() > max_len * max_len && (to < first_added || to > v) {
+                    splits.push(midpoint(e.from().position(), e.to().position()));
+                }
+            }
+        }
     }
+    is_inside.resize(cdt.num_all_faces(), true);
+    let inside: Vec<_> = cdt.inner_faces().filter(|f| is_inside[f.fix().index()]).collect();
 
     // Spade vertex index → output index: boundary vertices keep theirs, added vertices
     // used by inside faces are numbered after them in insertion order.
@@ -173,7 +179,7 @@ pub(crate) fn triangulate(
     }
     let mut used = vec![false; cdt.num_vertices()];
     for f in &inside {
-        for v in cdt.face(*f).vertices() {
+        for v in f.vertices() {
             used[v.fix().index()] = true;
         }
     }
@@ -182,7 +188,7 @@ pub(crate) fn triangulate(
     for (&v, &a) in &crossing {
         map[v] = a;
     }
-    let mut points = Vec::with_capacity(cdt.num_vertices() + lattice.points.len());
+    let mut points = Vec::with_capacity(cdt.num_vertices());
     points.extend_from_slice(boundary);
     for (i, v) in cdt.vertices().enumerate() {
         if map[i] == usize::MAX && used[i] {
@@ -191,18 +197,7 @@ pub(crate) fn triangulate(
             points.push(Vec2::new(p.x, p.y));
         }
     }
-    let mut faces: Vec<[usize; 3]> = inside.iter().map(|f| cdt.face(*f).vertices().map(|v| map[v.fix().index()])).collect();
-    // Then the lattice points inside the lattice's triangles, and those triangles.
-    let mut lattice_out: Vec<usize> = cdt_index.iter().map(|&c| if c == usize::MAX { usize::MAX } else { map[c] }).collect();
-    for f in &lattice_faces {
-        for &i in f {
-            if lattice_out[i] == usize::MAX {
-                lattice_out[i] = points.len();
-                points.push(lattice.points[i]);
-            }
-        }
-        faces.push(f.map(|i| lattice_out[i]));
-    }
+    let mut faces: Vec<[usize; 3]> = inside.iter().map(|f| f.vertices().map(|v| map[v.fix().index()])).collect();
     if !crossing.is_empty() {
         // Crossings mapped onto segment starts collapse or repeat faces.
         let mut seen = std::collections::HashSet::new();
@@ -217,14 +212,14 @@ pub(crate) fn triangulate(
 
 /// The interior points: a row along the outline, one point over the middle of each
 /// outline segment at [`ROW_HEIGHT`]`·res` (so the triangles on the outline are about
-/// isosceles, as a quality mesher makes them), and the lattice inside that row.
+/// isosceles, as a quality mesher makes them), and blue noise inside that row.
 fn interior_points(
     boundary: &[Vec2],
     segments: &[[usize; 2]],
     lines: &[[usize; 2]],
     res: f64,
     max_interior: usize,
-) -> Result<(Vec<Vec2>, Lattice), String> {
+) -> Result<(Vec<Vec2>, Vec<Vec2>), String> {
     let (mut lo, mut hi) = (Vec2::splat(f64::INFINITY), Vec2::splat(f64::NEG_INFINITY));
     for p in boundary {
         lo = lo.min(*p);
@@ -232,9 +227,9 @@ fn interior_points(
     }
     let t = ROW_HEIGHT * res;
     let clearance = t + BOUNDARY_CLEARANCE * res;
-    // Row and lattice keep clear of the lines as of the outline.
-    let all: Vec<[usize; 2]> = segments.iter().chain(lines).copied().collect();
-    let near = SegmentGrid::new(boundary, &all, lo, hi, clearance);
+    // Row and noise keep clear of the lines as of the outline.
+    let constraints: Vec<[usize; 2]> = segments.iter().chain(lines).copied().collect();
+    let near = SegmentGrid::new(boundary, &constraints, lo, hi, clearance);
     let mut grid = PointGrid::new(lo, hi, ROW_SPACING * res);
     let mut row = Vec::new();
     // Inside is on the left of a counter-clockwise outline (positive area), else on the
@@ -254,133 +249,112 @@ fn interior_points(
             row.push(q);
         }
     }
-    // A lattice point is at least `BOUNDARY_CLEARANCE·res` farther from the outline than
+    // A noise point is at least `BOUNDARY_CLEARANCE·res` farther from the outline than
     // any row point (a row point is at most `t` from it), so farther than `ROW_SPACING·res`
     // from every row point.
-    Ok((row, Lattice::new(boundary, segments, &near, LATTICE_SPACING * res, clearance, [lo, hi], max_interior)?))
+    Ok((row, blue_noise(boundary, segments, &near, res, clearance, [lo, hi], max_interior)?))
 }
 
-/// The points of an equilateral lattice of spacing `h` inside the outline (even–odd rule)
-/// and at least `clearance` away from it. Rows are `h·√3/2` apart, odd rows shifted by
-/// `h/2`; a point's place is its row and its column in half spacings. Memory and time
-/// go with the number of points and outline segments, not with the bounding box (a
-/// ruffle can be a 3 cm ring of 5 m radius).
-struct Lattice {
-    /// Row by row, columns increasing within a row.
-    points: Vec<Vec2>,
-    /// Each point's column.
-    column: Vec<u32>,
-    /// Row `r`'s points are `row_start[r]..row_start[r + 1]`.
-    row_start: Vec<usize>,
-}
-
-impl Lattice {
-    fn new(
-        boundary: &[Vec2],
-        segments: &[[usize; 2]],
-        near: &SegmentGrid,
-        h: f64,
-        clearance: f64,
-        [lo, hi]: [Vec2; 2],
-        max_points: usize,
-    ) -> Result<Lattice, String> {
-        let size = hi - lo;
-        let dy = h * 3f64.sqrt() / 2.0;
-        let mut lattice = Lattice { points: Vec::new(), column: Vec::new(), row_start: vec![0] };
-        if !(size.x > 2.0 * clearance && size.y > 2.0 * clearance) {
-            return Ok(lattice);
-        }
-        let rows = ((size.y - 2.0 * clearance) / dy).floor() as usize + 1;
-        // Centred in the bounding box; columns counted from `k_min`.
-        let y0 = lo.y + (size.y - (rows - 1) as f64 * dy) / 2.0;
-        let cx = (lo.x + hi.x) / 2.0;
-        let k_min = ((lo.x - cx) / h).floor() as i64 - 2;
-        let row_y = |r: usize| y0 + r as f64 * dy;
-        // Where each row crosses the outline (a segment crosses the rows within its
-        // height: min(y) <= y < max(y)), sorted by row, then x.
-        let mut crossings: Vec<(usize, f64)> = Vec::new();
-        for &[a, b] in segments {
-            let (pa, pb) = (boundary[a], boundary[b]);
-            let (y_lo, y_hi) = (pa.y.min(pb.y), pa.y.max(pb.y));
-            let first = (((y_lo - y0) / dy).floor().max(0.0) as usize).min(rows);
-            for r in first..rows {
-                let y = row_y(r);
-                if y >= y_hi {
-                    break;
-                }
-                if (pa.y <= y) != (pb.y <= y) {
-                    crossings.push((r, pa.x + (y - pa.y) * (pb.x - pa.x) / (pb.y - pa.y)));
-                }
+/// The points of the blue-noise tile, scaled by `res` and repeated over the plane from
+/// `lo`, that lie inside the outline (even–odd rule) and at least `clearance` away from
+/// it. The plane is cut into bands of [`BAND`]`·res`; where a band's middle line crosses
+/// the outline gives the band's inside spans, which hold exactly its points inside the
+/// outline that are farther from it than half a band. Memory and time go with the number
+/// of points and outline segments, not with the bounding box (a ruffle can be a 3 cm ring
+/// of 5 m radius).
+fn blue_noise(
+    boundary: &[Vec2],
+    segments: &[[usize; 2]],
+    near: &SegmentGrid,
+    res: f64,
+    clearance: f64,
+    [lo, hi]: [Vec2; 2],
+    max_points: usize,
+) -> Result<Vec<Vec2>, String> {
+    let size = hi - lo;
+    let mut points = Vec::new();
+    if !(size.x > 2.0 * clearance && size.y > 2.0 * clearance) {
+        return Ok(points);
+    }
+    let tile = noise_tile();
+    let (band, side) = (BAND * res, TILE_SIDE * res);
+    let bands = (size.y / band).ceil() as usize;
+    let band_y = |j: usize| lo.y + (j as f64 + 0.5) * band;
+    // Where each band's middle line crosses the outline (a segment crosses the lines
+    // within its height: min(y) <= y < max(y)), sorted by band, then x.
+    let mut crossings: Vec<(usize, f64)> = Vec::new();
+    for &[a, b] in segments {
+        let (pa, pb) = (boundary[a], boundary[b]);
+        let (y_lo, y_hi) = (pa.y.min(pb.y), pa.y.max(pb.y));
+        let first = (((y_lo - lo.y) / band - 0.5).floor().max(0.0) as usize).min(bands);
+        for j in first..bands {
+            let y = band_y(j);
+            if y >= y_hi {
+                break;
+            }
+            if (pa.y <= y) != (pb.y <= y) {
+                crossings.push((j, pa.x + (y - pa.y) * (pb.x - pa.x) / (pb.y - pa.y)));
             }
         }
-        crossings.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
-        let mut at = 0;
-        for r in 0..rows {
-            let end = at + crossings[at..].iter().take_while(|c| c.0 == r).count();
-            let shift = if r % 2 == 0 { 0.0 } else { h / 2.0 };
-            for span in crossings[at..end].chunks_exact(2) {
-                let (x0, x1) = (span[0].1 + clearance, span[1].1 - clearance);
-                if x1 < x0 {
-                    continue;
-                }
-                // Columns cx + shift + k·h within [x0, x1].
-                let k0 = ((x0 - cx - shift) / h).ceil() as i64;
-                let k1 = ((x1 - cx - shift) / h).floor() as i64;
-                for k in k0..=k1 {
-                    let p = Vec2::new(cx + shift + k as f64 * h, row_y(r)) + nudge(r as u64, k as u64, h);
+    }
+    crossings.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    // A point at least `clearance` from the outline is at least `clearance − band/2`
+    // from it along its band's middle line.
+    let margin = clearance - band / 2.0;
+    let mut at = 0;
+    for j in 0..bands {
+        let end = at + crossings[at..].iter().take_while(|c| c.0 == j).count();
+        let in_tile = &tile.bands[j % tile.bands.len()];
+        let y = lo.y + (j / tile.bands.len()) as f64 * side;
+        for span in crossings[at..end].chunks_exact(2) {
+            let (x0, x1) = (span[0].1 + margin, span[1].1 - margin);
+            if x1 < x0 {
+                continue;
+            }
+            // Copies of the tile from column c0 to c1, their points with x in [x0, x1].
+            let (c0, c1) = (((x0 - lo.x) / side).floor() as i64, ((x1 - lo.x) / side).floor() as i64);
+            for c in c0..=c1 {
+                let x = lo.x + c as f64 * side;
+                let first = in_tile.partition_point(|q| x + q.x * res < x0);
+                for q in in_tile[first..].iter().take_while(|q| x + q.x * res <= x1) {
+                    let p = Vec2::new(x, y) + *q * res;
                     if !near.within(p, clearance) {
-                        lattice.column.push((2 * (k - k_min) + (r % 2) as i64) as u32);
-                        lattice.points.push(p);
+                        points.push(p);
                     }
-                    if lattice.points.len() > max_points {
-                        return Err(format!("too large to mesh at {} cm (over {max_points} more vertices)", h / LATTICE_SPACING));
+                    if points.len() > max_points {
+                        return Err(format!("too large to mesh at {res} cm (over {max_points} more vertices)"));
                     }
-                }
-            }
-            lattice.row_start.push(lattice.points.len());
-            at = end;
-        }
-        Ok(lattice)
-    }
-
-    /// The point at `row`, `column`, if any.
-    fn at(&self, row: usize, column: usize) -> Option<usize> {
-        let range = self.row_start.get(row..row + 2)?;
-        let columns = &self.column[range[0]..range[1]];
-        columns.binary_search(&u32::try_from(column).ok()?).ok().map(|i| range[0] + i)
-    }
-
-    /// The lattice's triangles (counter-clockwise) whose three corners are points, and
-    /// the edges on the border of their union (in exactly one of them), directed as in
-    /// their triangle. Per point at `(r, c)`: the upper triangle `(r, c) (r, c+2) (r+1, c+1)`
-    /// and the lower one `(r, c) (r+1, c+1) (r+1, c−1)`.
-    fn triangles(&self) -> (Vec<[usize; 3]>, Vec<[usize; 2]>) {
-        let upper = |r: usize, c: usize| Some([self.at(r, c)?, self.at(r, c + 2)?, self.at(r + 1, c + 1)?]);
-        let lower = |r: usize, c: usize| Some([self.at(r, c)?, self.at(r + 1, c + 1)?, self.at(r + 1, c.checked_sub(1)?)?]);
-        let (mut faces, mut border) = (Vec::new(), Vec::new());
-        let mut push = |f: [usize; 3], across: [Option<[usize; 3]>; 3]| {
-            faces.push(f);
-            for k in 0..3 {
-                if across[k].is_none() {
-                    border.push([f[k], f[(k + 1) % 3]]);
-                }
-            }
-        };
-        let rows = self.row_start.len() - 1;
-        for r in 0..rows.saturating_sub(1) {
-            for i in self.row_start[r]..self.row_start[r + 1] {
-                let c = self.column[i] as usize;
-                // The triangles across each edge, in the edges' order.
-                if let Some(f) = upper(r, c) {
-                    push(f, [r.checked_sub(1).and_then(|q| lower(q, c + 1)), lower(r, c + 2), lower(r, c)]);
-                }
-                if let Some(f) = lower(r, c) {
-                    push(f, [upper(r, c), upper(r + 1, c - 1), c.checked_sub(2).and_then(|c| upper(r, c))]);
                 }
             }
         }
-        (faces, border)
+        at = end;
     }
+    Ok(points)
+}
+
+/// A square of blue noise (Poisson-disk points: no two closer than `NOISE_DISTANCE`,
+/// every spot within about that distance of one), [`TILE_SIDE`] on a side in units of the
+/// resolution and periodic, so that copies side by side join seamlessly; its points are
+/// cut into bands of [`BAND`], each sorted by x.
+struct NoiseTile {
+    bands: Vec<Vec<Vec2>>,
+}
+
+/// The tile: its points ([`noise_tile::POINTS`], made by dart throwing, see
+/// `dart_throwing`) sorted into bands once.
+fn noise_tile() -> &'static NoiseTile {
+    static TILE: std::sync::OnceLock<NoiseTile> = std::sync::OnceLock::new();
+    TILE.get_or_init(|| {
+        let side = TILE_SIDE;
+        let points = noise_tile::POINTS.iter().map(|&[x, y]| Vec2::new(x, y));
+        let n_bands = (side / BAND).round() as usize;
+        let mut bands = vec![Vec::new(); n_bands];
+        for p in points {
+            bands[((p.y / BAND) as usize).min(n_bands - 1)].push(p);
+        }
+        bands.iter_mut().for_each(|b| b.sort_by(|p, q| p.x.total_cmp(&q.x)));
+        NoiseTile { bands }
+    })
 }
 
 /// Outline segments bucketed by the cells of a uniform grid that their bounding boxes,
@@ -469,10 +443,10 @@ fn add_outline(cdt: &mut Cdt, handle: &[spade::handles::FixedVertexHandle], segm
     crossing
 }
 
-/// Inner faces inside the outline by the even–odd rule: a face's level is the number of
-/// constraints crossed on the way from the outer face (not counting `lines`, which
-/// bound nothing); odd levels are inside.
-fn inside_faces(cdt: &Cdt, lines: &std::collections::HashSet<[usize; 2]>) -> Vec<FixedFaceHandle<InnerTag>> {
+/// Which faces (by index) are inside the outline by the even–odd rule: a face's level is
+/// the number of constraints crossed on the way from the outer face (not counting
+/// `lines`, which bound nothing); odd levels are inside.
+fn inside_faces(cdt: &Cdt, lines: &std::collections::HashSet<[usize; 2]>) -> Vec<bool> {
     let bounds = |e: spade::handles::DirectedEdgeHandle<_, _, _, _>| {
         let (a, b) = (e.from().fix().index(), e.to().fix().index());
         e.is_constraint_edge() && (lines.is_empty() || !lines.contains(&[a.min(b), a.max(b)]))
@@ -502,20 +476,30 @@ fn inside_faces(cdt: &Cdt, lines: &std::collections::HashSet<[usize; 2]>) -> Vec
             }
         }
     }
-    cdt.inner_faces().filter(|f| parity[f.fix().index()] == Some(true)).map(|f| f.fix()).collect()
+    parity.into_iter().map(|p| p == Some(true)).collect()
+}
+
+/// The middle of `a` and `b`.
+fn midpoint(a: Point2<f64>, b: Point2<f64>) -> Point2<f64> {
+    Point2::new((a.x + b.x) / 2.0, (a.y + b.y) / 2.0)
 }
 
 /// A fixed pseudo-random offset of at most 0.1% of `scale` per coordinate, keyed by `a`
-/// and `b`. A lattice is full of collinear points, and a row over a straight outline of
-/// cocircular ones (isosceles trapezoids): each such test sends the triangulation's exact
-/// predicates to their slow arithmetic, which nudged points avoid.
+/// and `b`. A row over a straight outline is full of cocircular points (isosceles
+/// trapezoids): each such test sends the triangulation's exact predicates to their slow
+/// arithmetic, which nudged points avoid.
 fn nudge(a: u64, b: u64, scale: f64) -> Vec2 {
+    (hashed(a, b) - Vec2::splat(0.5)) * 2e-3 * scale
+}
+
+/// A fixed pseudo-random point of the unit square, keyed by `a` and `b`.
+fn hashed(a: u64, b: u64) -> Vec2 {
     let unit = |salt: u64| {
         let z = a.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ b.wrapping_mul(0xC2B2_AE3D_27D4_EB4F) ^ salt;
         let z = (z ^ (z >> 31)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        (z >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        (z >> 11) as f64 / (1u64 << 53) as f64
     };
-    Vec2::new(unit(1), unit(2)) * 2e-3 * scale
+    Vec2::new(unit(1), unit(2))
 }
 
 /// Points in the cells of a uniform grid, for "is any point closer than the cell size" queries.
@@ -562,6 +546,71 @@ fn segment_distance(p: Vec2, a: Vec2, b: Vec2) -> f64 {
     (p - (a + t * d)).length()
 }
 
+/// Blue noise on the torus of side [`TILE_SIDE`] by dart throwing (Bridson's algorithm)
+/// from a fixed seed: points no closer than `NOISE_DISTANCE`, each tried 30 times for a
+/// neighbour in the annulus between that distance and twice it. It made
+/// [`noise_tile::POINTS`] (a test checks that it still does): the tile is stored, since
+/// making it (about 3 ms) costs more than meshing a small garment.
+#[cfg(test)]
+fn dart_throwing() -> Vec<Vec2> {
+    let (side, r) = (TILE_SIDE, NOISE_DISTANCE);
+    // Background grid of cells r/√2 (at most one point each), on the torus.
+    let n = (side / (r / 2f64.sqrt())).floor() as usize;
+    let cell = side / n as f64;
+    let mut cells: Vec<Option<Vec2>> = vec![None; n * n];
+    let cell_of = |p: Vec2| ((p.x / cell) as usize % n, (p.y / cell) as usize % n);
+    // The cell `i − 2` on the torus, for `i` in `0..n + 4`; the shortest offset on the torus.
+    let around: Vec<usize> = (0..n + 4).map(|i| (i + n - 2) % n).collect();
+    let wrap = |d: f64| {
+        if d > side / 2.0 {
+            d - side
+        } else if d < -side / 2.0 {
+            d + side
+        } else {
+            d
+        }
+    };
+    let mut draws = 0u64;
+    let mut random = || {
+        draws += 1;
+        hashed(draws, 0x5EED)
+    };
+    let first = random() * side;
+    let mut points = vec![first];
+    let (c, r0) = cell_of(first);
+    cells[r0 * n + c] = Some(first);
+    let mut active = vec![0usize];
+    while !active.is_empty() {
+        let pick = ((random().x * active.len() as f64) as usize).min(active.len() - 1);
+        let centre = points[active[pick]];
+        let found = (0..30).find_map(|_| {
+            // A candidate in the annulus between r and 2r around the centre.
+            let u = random();
+            let (radius, angle) = (r * (1.0 + 3.0 * u.x).sqrt(), std::f64::consts::TAU * u.y);
+            let q = centre + Vec2::new(radius * angle.cos(), radius * angle.sin());
+            let q = Vec2::new(q.x.rem_euclid(side), q.y.rem_euclid(side));
+            let (cx, cy) = cell_of(q);
+            let free = around[cy..cy + 5].iter().all(|&row| {
+                around[cx..cx + 5].iter().all(|&column| {
+                    cells[row * n + column].is_none_or(|p| Vec2::new(wrap(p.x - q.x), wrap(p.y - q.y)).length_squared() >= r * r)
+                })
+            });
+            free.then_some((q, cx, cy))
+        });
+        match found {
+            Some((q, cx, cy)) => {
+                cells[cy * n + cx] = Some(q);
+                active.push(points.len());
+                points.push(q);
+            }
+            None => {
+                active.swap_remove(pick);
+            }
+        }
+    }
+    points
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -591,5 +640,62 @@ mod tests {
             }
         }
         assert!(t.points.len() > pts.len());
+    }
+
+    /// Edge directions of the inside edges not on the outline, counted in 12 bins of 15°.
+    fn direction_histogram(t: &PanelTriangulation, n_boundary: usize) -> [usize; 12] {
+        let mut bins = [0; 12];
+        for f in &t.faces {
+            for k in 0..3 {
+                let (a, b) = (f[k], f[(k + 1) % 3]);
+                if a < b && (a >= n_boundary || b >= n_boundary) {
+                    let d = t.points[b] - t.points[a];
+                    let angle = d.y.atan2(d.x).rem_euclid(std::f64::consts::PI).to_degrees();
+                    bins[((angle / 15.0) as usize).min(11)] += 1;
+                }
+            }
+        }
+        bins
+    }
+
+    /// The interior is irregular, as the reference's Delaunay refinement makes it: no
+    /// direction is favoured (a lattice puts nearly every edge in three directions, along
+    /// which the cloth folds like a hinge), and no edge exceeds the size bound.
+    #[test]
+    fn interior_edges_run_in_every_direction() {
+        let (pts, segs) = square(40, 40.0);
+        let t = triangulate(&pts, &segs, &[], 1.0, 100_000).unwrap();
+        let bins = direction_histogram(&t, pts.len());
+        let (least, most) = (*bins.iter().min().unwrap(), *bins.iter().max().unwrap());
+        assert!(most as f64 <= 1.6 * least as f64, "edge directions by 15°: {bins:?}");
+        // About the reference's density: 2/√3 points per res² (an equilateral mesh of edge res).
+        let density = (t.points.len() - pts.len()) as f64 / 1600.0;
+        assert!((1.0..1.3).contains(&density), "{density} points per cm²");
+    }
+
+    /// The noise tile is a Poisson-disk set on the torus: no two points closer than
+    /// `NOISE_DISTANCE`, and no empty spot farther than twice that from every point.
+    #[test]
+    fn the_noise_tile_is_blue_noise() {
+        let points: Vec<Vec2> = noise_tile().bands.iter().flatten().copied().collect();
+        let wrap = |d: f64| d - TILE_SIDE * (d / TILE_SIDE).round();
+        let dist = |p: Vec2, q: Vec2| Vec2::new(wrap(p.x - q.x), wrap(p.y - q.y)).length();
+        for (i, p) in points.iter().enumerate() {
+            for q in &points[i + 1..] {
+                assert!(dist(*p, *q) >= NOISE_DISTANCE, "{p:?} {q:?}");
+            }
+        }
+        for k in 0..48 * 48 {
+            let spot = Vec2::new((k % 48) as f64, (k / 48) as f64) * (TILE_SIDE / 48.0);
+            assert!(points.iter().any(|p| dist(*p, spot) < 2.0 * NOISE_DISTANCE), "{spot:?}");
+        }
+    }
+
+    /// The stored tile is what the dart throwing makes, bit for bit.
+    #[test]
+    fn the_stored_tile_is_the_dart_throwings() {
+        let made: Vec<[u64; 2]> = dart_throwing().iter().map(|p| [p.x.to_bits(), p.y.to_bits()]).collect();
+        let stored: Vec<[u64; 2]> = noise_tile::POINTS.iter().map(|p| p.map(f64::to_bits)).collect();
+        assert_eq!(made, stored);
     }
 }
