@@ -416,7 +416,10 @@ pub fn place_on<P: PanelPart, Q: PanelPart>(
     let name = format!("{}_placement", piece.name(a));
     target.check_inside(a, &name, &edges.linearized_positions(a))?;
     let index = target.add_line(a, &name, LineKind::Placement, edges.clone())?;
-    let line = a.interface(target, sewn_copy);
+    // The piece lies on the panel's face, its sewn edges running along the line in the
+    // same direction: the seam pairs them as they are (`right_wrong`), not reversed as
+    // between two panels facing each other.
+    let line = a.interface(target, sewn_copy).set_right_wrong(a, true);
     let stitch = StitchRule::new(a, sewn, line)?;
     target.add_stitch(a, stitch);
     Ok(Placement { line: Line { index, edges }, stitch })

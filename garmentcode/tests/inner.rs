@@ -142,6 +142,17 @@ fn a_patch_pocket_lies_on_its_panel_at_the_placement_line() {
     }
     // Every line edge once, in the line's order or the opposite.
     assert!(on_line == [0, 1, 2] || on_line == [2, 1, 0], "{on_line:?}");
+    // The pocket lies on the front's face, its edges along the line in the same
+    // direction: sewn as they are (`right_wrong`), not reversed as between panels that
+    // face each other, or the box mesh would pair each corner with the opposite one.
+    assert!(p.inner_stitches.iter().all(|st| st.right_wrong));
+    let mesh = garmentcode::mesh::BoxMesh::new(&p, 1.0).unwrap();
+    let pocket_corners: Vec<Vec3> = corners.iter().map(|c| pocket.point_to_3d(&a, *c)).collect();
+    for corner in pocket_corners {
+        // Each corner of the sewn edges has a merged stitch vertex within 0.5 cm of it.
+        let nearest = mesh.vertices[..mesh.n_stitch_vertices].iter().map(|v| (*v - corner).length()).fold(f64::INFINITY, f64::min);
+        assert!(nearest < 0.5, "pocket corner {corner}: nearest stitch vertex {nearest} cm away");
+    }
     // A pocket off the panel is refused.
     let (other, oe) = rect(&mut a, "other", 12.0, 14.0);
     let sewn = a.interface(other, oe.clone());
