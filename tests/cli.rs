@@ -789,17 +789,13 @@ fn a_size_run_prints_every_size_nested_and_names_the_sizes_it_leaves_out() {
     let svg = std::fs::read_to_string(dir.join("run/pattern-sheet.svg")).unwrap();
     assert!(svg.contains(">size 80</text>") && svg.contains("Sizes: 80, 84, 88, 92, 96"), "a legend and the sizes on the labels");
     // ezdxf reads it, with every size's blocks (as in garmentcode's own DXF test; SKIPPED without ezdxf).
-    let python = std::env::var("GARMENTCODE_EZDXF_PYTHON").unwrap_or_else(|_| "python3".into());
-    let script = "import sys, ezdxf\ndoc = ezdxf.readfile(sys.argv[1])\nprint(len(doc.audit().errors), sorted({t.dxf.text for b in doc.blocks for t in b if t.dxftype() == 'TEXT' and t.dxf.text.startswith('Size:')}))";
-    match std::process::Command::new(&python).arg("-c").arg(script).arg(dir.join("run/pattern.dxf")).output() {
-        Ok(o) if o.status.success() => {
-            assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), "0 ['Size: 80', 'Size: 84', 'Size: 88', 'Size: 92', 'Size: 96']")
-        }
-        Ok(o) if String::from_utf8_lossy(&o.stderr).contains("No module named 'ezdxf'") => {
-            eprintln!("SKIPPED the ezdxf read-back of a size run: Python's ezdxf is not installed (pip install ezdxf)")
-        }
-        Ok(o) => panic!("ezdxf failed: {}", String::from_utf8_lossy(&o.stderr)),
-        Err(e) => eprintln!("SKIPPED the ezdxf read-back of a size run: {python} cannot run ({e})"),
+    let script = "import sys, json, ezdxf\ndoc = ezdxf.readfile(sys.argv[1])\nprint(json.dumps([len(doc.audit().errors), sorted({t.dxf.text for b in doc.blocks for t in b if t.dxftype() == 'TEXT' and t.dxf.text.startswith('Size:')})]))";
+    if let Some(v) = common::ezdxf::read_back(
+        "a_size_run_prints_every_size_nested_and_names_the_sizes_it_leaves_out",
+        &dir.join("run/pattern.dxf"),
+        script,
+    ) {
+        assert_eq!(v, serde_json::json!([0, ["Size: 80", "Size: 84", "Size: 88", "Size: 92", "Size: 96"]]));
     }
     // A size whose design fails is named with the reason; the others are written.
     std::fs::write(dir.join("tiny.yaml"), "body:\n  base: mean_female\n  height: 82\n").unwrap();

@@ -8,6 +8,9 @@
 use garmentcode::{EXTENSION_VERSION, EdgePlace, HoleKind, Layer, LineKind, Pattern};
 use std::path::Path;
 
+#[path = "support/ezdxf.rs"]
+mod ezdxf;
+
 /// An edit of the fixture's JSON.
 type JsonEdit = Box<dyn FnOnce(&mut serde_json::Value)>;
 /// An edit of the fixture's pattern.
@@ -319,6 +322,25 @@ fn check_reports_each_extension_error() {
             "front",
             "inner stitch 2: edge 2 of the outline is already used by stitch 0",
         ),
+        (
+            Box::new(|p| {
+                for e in &mut panel_mut(p, "front").holes[1].edges {
+                    e.curvature = Some(garmentcode::Curvature::Circle { radius: 1.0, large_arc: false, right: false });
+                }
+            }),
+            K::ArcRadiusTooSmall,
+            "front",
+            "hole 'keyhole' edge 0: arc radius 1 cm is under half the distance between its ends: no circle of that radius joins them (at least 2 cm)",
+        ),
+        (
+            Box::new(|p| {
+                panel_mut(p, "front").edges[0].curvature =
+                    Some(garmentcode::Curvature::Circle { radius: 5.0, large_arc: false, right: true })
+            }),
+            K::ArcRadiusTooSmall,
+            "front",
+            "arc radius 5 cm is under half the distance between its ends: no circle of that radius joins them (at least 20 cm)",
+        ),
     ];
     for (edit, kind, panel, message) in cases {
         let errors = errors_after(edit);
@@ -493,8 +515,6 @@ fn dxf_without_the_extension_keeps_its_layers() {
 #[test]
 fn dxf_with_the_extension_reads_in_ezdxf() {
     let (text, _) = fixture_dxf();
-    let file = std::env::temp_dir().join(format!("garmentcode-extension-{}.dxf", std::process::id()));
-    std::fs::write(&file, &text).expect("write");
     let script = r#"
 import sys, json
 import ezdxf
@@ -506,22 +526,7 @@ for e in front:
     count[key] = count.get(key, 0) + 1
 print(json.dumps({"errors": len(doc.audit().errors), "front": count, "layers": sorted(l.dxf.name for l in doc.layers)}))
 "#;
-    let python = std::env::var("GARMENTCODE_EZDXF_PYTHON").unwrap_or_else(|_| "python3".into());
-    let run = std::process::Command::new(&python).arg("-c").arg(script).arg(&file).output();
-    let _ = std::fs::remove_file(&file);
-    let out = match run {
-        Ok(o) if o.status.success() => o.stdout,
-        Ok(o) if String::from_utf8_lossy(&o.stderr).contains("No module named 'ezdxf'") => {
-            eprintln!("SKIPPED dxf_with_the_extension_reads_in_ezdxf: Python's ezdxf is not installed");
-            return;
-        }
-        Ok(o) => panic!("ezdxf failed: {}", String::from_utf8_lossy(&o.stderr)),
-        Err(e) => {
-            eprintln!("SKIPPED dxf_with_the_extension_reads_in_ezdxf: {python} cannot run ({e})");
-            return;
-        }
-    };
-    let v: serde_json::Value = serde_json::from_slice(&out).expect("json");
+    let Some(v) = ezdxf::read_back_text("dxf_with_the_extension_reads_in_ezdxf", &text, script) else { return };
     assert_eq!(v["errors"], 0, "{v}");
     assert_eq!(v["front"]["POINT:13"], 8, "{v}");
     assert_eq!(v["front"]["POLYLINE:11"], 1, "{v}");

@@ -2,6 +2,9 @@
 //! folders, and reading what it printed (each test file uses some of it).
 #![allow(dead_code)]
 
+#[path = "../../garmentcode/tests/support/ezdxf.rs"]
+pub mod ezdxf;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

@@ -6,6 +6,9 @@ use super::*;
 use crate::math::Vec2;
 use crate::test_data::cases;
 
+#[path = "../../tests/support/ezdxf.rs"]
+mod ezdxf;
+
 fn opts(name: &str) -> PrintOptions {
     PrintOptions { garment: name.into(), size: "mean_all".into(), ..Default::default() }
 }
@@ -399,18 +402,10 @@ fn dxf_reads_back_with_one_block_per_piece_and_the_pattern_outlines() {
     }
 }
 
-/// Write to the test's real stderr (not captured), so a skip is seen.
-fn say(msg: &str) {
-    use std::io::Write;
-    let _ = std::io::stderr().write_all(msg.as_bytes());
-}
-
 #[test]
 fn dxf_reads_back_in_ezdxf() {
     let (name, p) = cases().into_iter().find(|(n, _)| n == "t-shirt-mean_all").unwrap();
     let (ps, ours, text) = read_back(&p, &name);
-    let file = std::env::temp_dir().join(format!("garmentcode-print-{}.dxf", std::process::id()));
-    std::fs::write(&file, &text).unwrap();
     let script = r#"
 import sys, json
 import ezdxf
@@ -434,23 +429,7 @@ auditor = doc.audit()
 out["errors"] = len(auditor.errors)
 print(json.dumps(out))
 "#;
-    // `.ci/run` points GARMENTCODE_EZDXF_PYTHON at a virtual environment with ezdxf.
-    let python = std::env::var("GARMENTCODE_EZDXF_PYTHON").unwrap_or_else(|_| "python3".into());
-    let run = std::process::Command::new(&python).arg("-c").arg(script).arg(&file).output();
-    let _ = std::fs::remove_file(&file);
-    let out = match run {
-        Ok(o) if o.status.success() => o.stdout,
-        Ok(o) if String::from_utf8_lossy(&o.stderr).contains("No module named 'ezdxf'") => {
-            say("SKIPPED dxf_reads_back_in_ezdxf: Python's ezdxf is not installed (pip install ezdxf)\n");
-            return;
-        }
-        Ok(o) => panic!("ezdxf failed: {}", String::from_utf8_lossy(&o.stderr)),
-        Err(e) => {
-            say(&format!("SKIPPED dxf_reads_back_in_ezdxf: {python} cannot run ({e})\n"));
-            return;
-        }
-    };
-    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let Some(v) = ezdxf::read_back_text("dxf_reads_back_in_ezdxf", &text, script) else { return };
     assert_eq!(v["version"], "AC1009");
     assert_eq!(v["errors"], 0, "{v}");
     let inserts = v["inserts"].as_array().unwrap();

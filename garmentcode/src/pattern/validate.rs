@@ -4,8 +4,10 @@
 
 mod inner;
 
-use super::{EdgePlace, LineKind, Pattern};
+use super::{Curvature, EdgePlace, EdgeSpec, LineKind, Pattern};
 use crate::intersect;
+use crate::math::Vec2;
+use crate::message::short;
 use std::collections::HashMap;
 use std::fmt;
 
@@ -60,6 +62,9 @@ pub enum ProblemKind {
     DuplicateName,
     /// An inner stitch names a hole or line that does not exist.
     UnknownHoleOrLine,
+    /// A circular arc whose radius is under half the distance between its ends: no
+    /// circle of that radius joins them.
+    ArcRadiusTooSmall,
 }
 
 impl ProblemKind {
@@ -85,8 +90,25 @@ impl ProblemKind {
             ProblemKind::FoldAngleOutOfRange => "fold_angle_out_of_range",
             ProblemKind::DuplicateName => "duplicate_name",
             ProblemKind::UnknownHoleOrLine => "unknown_hole_or_line",
+            ProblemKind::ArcRadiusTooSmall => "arc_radius_too_small",
         }
     }
+}
+
+/// Why the circular arc `e` cannot be drawn, if its radius is under half the distance
+/// between its ends (beyond the tolerance [`crate::arc::cy_from_radius`] rounds to a
+/// half circle): the message says the radius it needs at least.
+pub(crate) fn arc_radius_too_small(vertices: &[[f64; 2]], e: &EdgeSpec) -> Option<String> {
+    let Some(Curvature::Circle { radius, .. }) = e.curvature else { return None };
+    let (s, t) = (Vec2::from(vertices[e.endpoints[0]]), Vec2::from(vertices[e.endpoints[1]]));
+    let half = (t - s).length() / 2.0;
+    (radius * radius < half * half - 1e-3).then(|| {
+        format!(
+            "arc radius {} cm is under half the distance between its ends: no circle of that radius joins them (at least {} cm)",
+            short(radius),
+            short(half)
+        )
+    })
 }
 
 /// One problem found in a pattern.
@@ -259,6 +281,9 @@ fn structure(p: &Pattern) -> (Vec<Problem>, HashMap<&str, bool>) {
                 let (s, t) = (panel.vertices[e.endpoints[0]], panel.vertices[e.endpoints[1]]);
                 if (s[0] - t[0]).abs() < 1e-4 && (s[1] - t[1]).abs() < 1e-4 {
                     out.push(err(ProblemKind::DegenerateEdge, Some(name), Some(i), None, "start and end coincide".into()));
+                    ok = false;
+                } else if let Some(message) = arc_radius_too_small(&panel.vertices, e) {
+                    out.push(err(ProblemKind::ArcRadiusTooSmall, Some(name), Some(i), None, message));
                     ok = false;
                 }
             }

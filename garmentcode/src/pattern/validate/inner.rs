@@ -114,6 +114,10 @@ fn well_formed(what: &str, vertices: &[[f64; 2]], edges: &[EdgeSpec], closed: bo
             report(ProblemKind::DegenerateEdge, format!("{what} edge {i}: start and end coincide"));
             return false;
         }
+        if let Some(message) = super::arc_radius_too_small(vertices, e) {
+            report(ProblemKind::ArcRadiusTooSmall, format!("{what} edge {i}: {message}"));
+            return false;
+        }
     }
     true
 }
