@@ -351,7 +351,10 @@ pub fn fold_line<P: PanelPart>(a: &mut Arena, panel: &P, name: &str, from: Vec2,
 /// In 3D the joined panel lies between where the two were: the fold midway between
 /// the two edges, `first`'s part turned about it by `(180 − angle) / 2` degrees
 /// outward (along its normal), so that the fold opens the two parts symmetrically.
-/// Edges keep their directions, so every stitch pairs its edges as before.
+/// Edges keep their directions, so every stitch pairs its edges as before. The
+/// placement is final (join panels last): its local origin is moved to the outline's
+/// first vertex, and its rotation is stored as readers of the file take it (the
+/// reference writes Euler angles in one order and reads them in the other).
 ///
 /// ```
 /// use garmentcode::inner::join_at_fold;
@@ -461,9 +464,29 @@ pub fn join_at_fold<P: PanelPart, Q: PanelPart>(
     let side = if axis.cross(inward).dot(normal) >= 0.0 { 1.0 } else { -1.0 };
     let turn = Rotation::from_rotvec(axis * (side * (180.0 - angle) / 2.0).to_radians());
     let shift = ((w_s + w_es) / 2.0 + (w_e + w_ss) / 2.0) / 2.0 - (w_s + w_e) / 2.0;
+    let d = a.pd(first);
+    let rotation = turn.compose(&d.rotation);
+    let translation = turn.apply(d.translation - w_s) + w_s + shift;
+    // The local origin at the outline's first vertex, exactly, so that assembling
+    // (which moves it there, truncated) leaves the placement as it is.
+    let origin = a.pos(a.start(first.edges(a)[0]));
+    let mut verts = first.edges(a).verts(a);
+    verts.extend(first.inner_edges(a).flat_map(|s| s.verts(a)));
+    verts.sort();
+    verts.dedup();
+    for v in verts {
+        let p = a.pos(v) - origin;
+        a.set_pos(v, p);
+    }
+    // Turned about more than one axis: readers of the file (the box mesh, the
+    // reference's simulator) take the written angles as Rz·Ry·Rx where the writer
+    // writes Rx·Ry·Rz (a reference quirk, kept for parity), so the rotation is stored
+    // as the one whose written angles readers take for this turn.
+    let m = rotation.matrix();
+    let zyx = [m.y_axis.z.atan2(m.z_axis.z), (-m.x_axis.z).clamp(-1.0, 1.0).asin(), m.x_axis.y.atan2(m.x_axis.x)];
     let d = a.pd_mut(first);
-    d.translation = turn.apply(d.translation - w_s) + w_s + shift;
-    d.rotation = turn.compose(&d.rotation);
+    d.translation = rotation.apply(Vec3::new(origin.x, origin.y, 0.0)) + translation;
+    d.rotation = Rotation::from_euler_xyz(zyx);
     Ok(line)
 }
 
