@@ -118,7 +118,8 @@ fn the_extension_is_outside_the_references_design_space_and_its_samples() {
 fn cuff_top_corner(p: &Pattern, panel: &str, top_length: f64) -> [f64; 2] {
     let sp = p.panel(panel).unwrap();
     let ends = |side: &garmentcode::StitchSide| sp.edges[side.edge].endpoints.map(|k| sp.vertices[k]);
-    let mut top: Vec<[f64; 2]> = sp.lines.iter().filter(|l| matches!(l.kind, LineKind::Fold { .. })).flat_map(|l| l.vertices.clone()).collect();
+    let mut top: Vec<[f64; 2]> =
+        sp.lines.iter().filter(|l| matches!(l.kind, LineKind::Fold { .. })).flat_map(|l| l.vertices.clone()).collect();
     let mut cuff = Vec::new();
     for st in &p.stitches {
         for (mine, other) in [(&st.sides[0], &st.sides[1]), (&st.sides[1], &st.sides[0])] {
@@ -132,7 +133,9 @@ fn cuff_top_corner(p: &Pattern, panel: &str, top_length: f64) -> [f64; 2] {
             }
         }
     }
-    *top.iter().find(|t| cuff.iter().any(|c| (c[0] - t[0]).hypot(c[1] - t[1]) < 1e-6)).unwrap_or_else(|| panic!("{panel}: no cuff-top corner"))
+    *top.iter()
+        .find(|t| cuff.iter().any(|c| (c[0] - t[0]).hypot(c[1] - t[1]) < 1e-6))
+        .unwrap_or_else(|| panic!("{panel}: no cuff-top corner"))
 }
 
 /// Every stitch between a sleeve and a torso panel as (torso panel, torso edge,
