@@ -381,6 +381,9 @@ pub struct SchemaArgs {
     /// design file, written with every parameter's range and probability.
     #[arg(short, long, value_name = "NAME|FILE.yaml", value_parser = design_arg(), hide_possible_values = true)]
     pub design: Option<String>,
+    /// With the parameters past the reference (`design.extension`: pockets, pleats, diamond darts, one-piece sleeves, folded cuffs and collars) after the reference's, as `sample --extended` draws them.
+    #[arg(long)]
+    pub extended: bool,
 }
 
 /// Formats of `check`.

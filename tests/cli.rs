@@ -347,6 +347,42 @@ fn schema_prints_the_design_space_and_presets_are_designs_that_build() {
     assert!(spec("a") == spec("b"), "the preset's design file builds the preset");
     // --design goes with the design-file format only.
     assert_eq!(code(&run(&["schema", "--design", "t-shirt", "--format", "table"], &dir)), 2);
+    // A preset past the reference keeps its extension and builds the same garment.
+    let o = run(&["schema", "--design", "pocket-shirt"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(stdout(&o).contains("one_piece:"), "{}", stdout(&o));
+    std::fs::write(dir.join("p.yaml"), o.stdout).unwrap();
+    assert_eq!(code(&run(&["build", "--design", "p.yaml", "--name", "pocket-shirt", "-o", "c", "--no-png"], &dir)), 0);
+    assert_eq!(code(&run(&["build", "--design", "pocket-shirt", "-o", "d", "--no-png"], &dir)), 0);
+    assert!(spec("c") == spec("d"), "the extended preset builds the preset");
+}
+
+#[test]
+fn schema_extended_adds_the_extension_after_the_references_parameters() {
+    let dir = scratch("schema_extended");
+    let o = run(&["schema", "--format", "table"], &dir);
+    let plain: Vec<String> = stdout(&o).lines().map(|l| l.split_whitespace().next().unwrap().to_string()).collect();
+    assert!(plain.iter().all(|p| !p.starts_with("extension.")));
+    let o = run(&["schema", "--format", "table", "--extended"], &dir);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let wide: Vec<String> = stdout(&o).lines().map(|l| l.split_whitespace().next().unwrap().to_string()).collect();
+    assert_eq!(&wide[..plain.len()], &plain[..]);
+    assert!(wide[plain.len()..].iter().all(|p| p.starts_with("extension.")));
+    assert!(wide.iter().any(|p| p == "extension.sleeve.one_piece"));
+    let o = run(&["schema", "--format", "json-schema", "--extended"], &dir);
+    assert_eq!(code(&o), 0);
+    let schema: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(schema.to_string().contains("one_piece"));
+    let o = run(&["schema", "--extended"], &dir);
+    std::fs::write(dir.join("space.yaml"), o.stdout).unwrap();
+    let space = garmentcode::DesignSpace::from_yaml(
+        &std::fs::read_to_string(dir.join("space.yaml")).unwrap(),
+        "space.yaml",
+        &garments::design::extended_design_space(),
+    )
+    .unwrap();
+    let paths = |s: &garmentcode::DesignSpace| s.params().iter().map(|p| p.path.clone()).collect::<Vec<_>>();
+    assert_eq!(paths(&space), paths(&garments::design::extended_design_space()));
 }
 
 #[test]

@@ -339,6 +339,157 @@ pub fn fold_line<P: PanelPart>(a: &mut Arena, panel: &P, name: &str, from: Vec2,
     Ok(Line { index, edges })
 }
 
+/// Make two panels sewn along a straight edge each one panel folded there (a
+/// one-piece sleeve from a front and a back sleeve panel): `second`'s outline is
+/// laid beside `first`'s across `first_edge` (its `second_edge` onto `first_edge`,
+/// their ends paired as a seam pairs them, start to end; mirrored when the two
+/// outlines turn opposite ways) and joined to it, and a fold line `name` turning by
+/// `angle` degrees replaces the two edges. `second`'s holes, lines, inner stitches and
+/// the interfaces over its edges move to `first`; `second` is left without edges, and
+/// the caller drops it from its component with any stitch between the two edges.
+///
+/// In 3D the joined panel lies between where the two were: the fold midway between
+/// the two edges, `first`'s part turned about it by `(180 − angle) / 2` degrees
+/// outward (along its normal), so that the fold opens the two parts symmetrically.
+/// Edges keep their directions, so every stitch pairs its edges as before. The
+/// placement is final (join panels last): its local origin is moved to the outline's
+/// first vertex, and its rotation is stored as readers of the file take it (the
+/// reference writes Euler angles in one order and reads them in the other).
+///
+/// ```
+/// use garmentcode::inner::join_at_fold;
+/// use garmentcode::{Arena, EdgeSeq, LineKind, Vec2};
+///
+/// let mut a = Arena::new();
+/// // Two sleeve halves below their tops (edge 3 of the front, 0 of the back), their
+/// // outlines turning opposite ways as a front and back panel's do.
+/// let front = EdgeSeq::from_points(&mut a, &[Vec2::ZERO, Vec2::new(0.0, -20.0), Vec2::new(40.0, -20.0), Vec2::new(40.0, 0.0)], true)?;
+/// let back = EdgeSeq::from_points(&mut a, &[Vec2::ZERO, Vec2::new(40.0, 0.0), Vec2::new(40.0, -22.0), Vec2::new(0.0, -22.0)], true)?;
+/// let (f, b) = (a.panel_with_edges("front", front.clone()), a.panel_with_edges("back", back.clone()));
+/// let fold = join_at_fold(&mut a, &f, front[3], &b, back[0], "fold", 90.0)?;
+/// let pattern = a.assemble_panels(&[f], "sleeve")?;
+/// let sleeve = &pattern.panels[0];
+/// assert_eq!((sleeve.edges.len(), sleeve.lines[fold.index].kind), (6, LineKind::Fold { angle: 90.0 }));
+/// // The back part lies above the fold, mirrored: 20 + 22 cm high.
+/// let ys: Vec<f64> = sleeve.vertices.iter().map(|v| v[1]).collect();
+/// assert_eq!(ys.iter().cloned().fold(f64::MIN, f64::max) - ys.iter().cloned().fold(f64::MAX, f64::min), 42.0);
+/// # Ok::<(), garmentcode::Error>(())
+/// ```
+pub fn join_at_fold<P: PanelPart, Q: PanelPart>(
+    a: &mut Arena,
+    first: &P,
+    first_edge: EdgeId,
+    second: &Q,
+    second_edge: EdgeId,
+    name: &str,
+    angle: f64,
+) -> Result<Line> {
+    let (first, second) = (first.panel_id(), second.panel_id());
+    let refuse = |a: &Arena, why: &str| Error::Design(format!("joining '{}' to '{}' at a fold: {why}", second.name(a), first.name(a)));
+    if first == second {
+        return Err(refuse(a, "a panel cannot be joined to itself"));
+    }
+    if !(0.0..=180.0).contains(&angle) {
+        return Err(refuse(a, &format!("the fold turns by {angle}°: a fold's angle is 0 to 180 degrees")));
+    }
+    let (Some(i), Some(j)) = (first.edges(a).index_of(first_edge), second.edges(a).index_of(second_edge)) else {
+        return Err(refuse(a, "each edge must be on its panel's outline"));
+    };
+    if a.curve(first_edge) != Curve::Line || a.curve(second_edge) != Curve::Line {
+        return Err(refuse(a, "a fold is straight: both edges must be straight"));
+    }
+    let (lf, lb) = (a.edge_length(first_edge), a.edge_length(second_edge));
+    if (lf - lb).abs() > 1e-6 * lf.max(1.0) {
+        return Err(refuse(a, &format!("the edges are {lf:.4} and {lb:.4} cm long: they must be as long")));
+    }
+    let (s_f, e_f) = (a.pos(a.start(first_edge)), a.pos(a.end(first_edge)));
+    let (s_b, e_b) = (a.pos(a.start(second_edge)), a.pos(a.end(second_edge)));
+    let (w_s, w_e) = (first.point_to_3d(a, s_f), first.point_to_3d(a, e_f));
+    let (w_es, w_ss) = (second.point_to_3d(a, e_b), second.point_to_3d(a, s_b));
+    // `first`'s part lies left of its edge when its outline turns counter-clockwise.
+    let ccw = first.signed_area(a) >= 0.0;
+    let left = Vec2::new(s_f.y - e_f.y, e_f.x - s_f.x);
+    let inward = first.point_to_3d(a, s_f + if ccw { left } else { -left }) - w_s;
+    let normal = first.norm(a);
+    // The outlines, each opened at its edge: from the edge's end round to its start.
+    let open = |seq: &EdgeSeq, k: usize| EdgeSeq((1..seq.len()).map(|d| seq[(k + d) % seq.len()]).collect());
+    let (f_chain, b_chain) = (open(first.edges(a), i), open(second.edges(a), j));
+    // The map taking `second`'s edge onto `first`'s (s_b to e_f, e_b to s_f), a
+    // mirror when the outlines turn opposite ways, so that the joined outline turns
+    // one way and `second`'s part lies across the fold.
+    let mirror = ccw != (second.signed_area(a) >= 0.0);
+    let (u_b, u_f) = ((e_b - s_b).normalize(), (s_f - e_f).normalize());
+    let map = |p: Vec2| {
+        let d = p - s_b;
+        let d = if mirror { 2.0 * d.dot(u_b) * u_b - d } else { d };
+        // Rotate u_b onto u_f.
+        let (c, s) = (u_b.dot(u_f), u_b.perp_dot(u_f));
+        e_f + Vec2::new(c * d.x - s * d.y, s * d.x + c * d.y)
+    };
+    let moved: Vec<EdgeId> = b_chain.iter().copied().chain(second.inner_edges(a).flat_map(|s| s.iter().copied())).collect();
+    let mut verts: Vec<_> = moved.iter().flat_map(|e| [a.start(*e), a.end(*e)]).collect();
+    verts.sort();
+    verts.dedup();
+    for v in verts {
+        let p = map(a.pos(v));
+        a.set_pos(v, p);
+    }
+    if mirror {
+        moved.iter().for_each(|e| a.reflect_edge_features(*e));
+    }
+    // Join: the second chain runs from s_f round to e_f, over `first`'s vertices there.
+    let (vs, ve) = (a.start(first_edge), a.end(first_edge));
+    a.set_start(b_chain[0], vs);
+    a.set_end(b_chain.last_edge(), ve);
+    let mut joined = f_chain;
+    joined.extend(b_chain.iter().copied());
+    // Everything of `second` moves to `first`.
+    a.pd_mut(second).edges = EdgeSeq::new();
+    let (holes, lines) = (std::mem::take(&mut a.pd_mut(second).holes), std::mem::take(&mut a.pd_mut(second).lines));
+    let (stitches, interfaces) = (std::mem::take(&mut a.pd_mut(second).stitches), std::mem::take(&mut a.pd_mut(second).interfaces));
+    for d in a.interfaces.iter_mut() {
+        d.panels.iter_mut().filter(|p| **p == second).for_each(|p| *p = first);
+    }
+    let d = a.pd_mut(first);
+    d.edges = joined;
+    d.holes.extend(holes);
+    d.lines.extend(lines);
+    d.stitches.extend(stitches);
+    d.interfaces.extend(interfaces);
+    // The fold, with `second`'s part to its right (the part a fold turns).
+    let (from, to) = if ccw { (s_f, e_f) } else { (e_f, s_f) };
+    let line = fold_line(a, &first, name, from, to, angle)?;
+    // In 3D: turned about the fold, outward, and moved midway between the two edges.
+    let axis = (w_e - w_s).normalize();
+    let side = if axis.cross(inward).dot(normal) >= 0.0 { 1.0 } else { -1.0 };
+    let turn = Rotation::from_rotvec(axis * (side * (180.0 - angle) / 2.0).to_radians());
+    let shift = ((w_s + w_es) / 2.0 + (w_e + w_ss) / 2.0) / 2.0 - (w_s + w_e) / 2.0;
+    let d = a.pd(first);
+    let rotation = turn.compose(&d.rotation);
+    let translation = turn.apply(d.translation - w_s) + w_s + shift;
+    // The local origin at the outline's first vertex, exactly, so that assembling
+    // (which moves it there, truncated) leaves the placement as it is.
+    let origin = a.pos(a.start(first.edges(a)[0]));
+    let mut verts = first.edges(a).verts(a);
+    verts.extend(first.inner_edges(a).flat_map(|s| s.verts(a)));
+    verts.sort();
+    verts.dedup();
+    for v in verts {
+        let p = a.pos(v) - origin;
+        a.set_pos(v, p);
+    }
+    // Turned about more than one axis: readers of the file (the box mesh, the
+    // reference's simulator) take the written angles as Rz·Ry·Rx where the writer
+    // writes Rx·Ry·Rz (a reference quirk, kept for parity), so the rotation is stored
+    // as the one whose written angles readers take for this turn.
+    let m = rotation.matrix();
+    let zyx = [m.y_axis.z.atan2(m.z_axis.z), (-m.x_axis.z).clamp(-1.0, 1.0).asin(), m.x_axis.y.atan2(m.x_axis.x)];
+    let d = a.pd_mut(first);
+    d.translation = rotation.apply(Vec3::new(origin.x, origin.y, 0.0)) + translation;
+    d.rotation = Rotation::from_euler_xyz(zyx);
+    Ok(line)
+}
+
 /// A piece sewn on the face of a panel, made by [`place_on`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Placement {

@@ -406,6 +406,42 @@ fn drawing_shows_every_construct() {
     insta::assert_snapshot!("extension_svg", svg);
 }
 
+/// Inner stitches get numbered markers too, numbered on after the stitches (as the
+/// box mesh's `stitch_K` labels), on their hole or line edges.
+#[test]
+fn drawing_numbers_inner_stitches_after_the_stitches() {
+    use garmentcode::draw::{DrawOptions, to_svg};
+    let p = fixture();
+    let (n, m) = (p.stitches.len(), p.inner_stitches.len());
+    assert!(m > 0);
+    let svg = to_svg(&p, &DrawOptions::default()).expect("draws");
+    let groups: Vec<&str> = svg.lines().filter(|l| l.starts_with("<g class=\"stitch\" ")).collect();
+    let mut expected: Vec<String> = Vec::new();
+    for (i, st) in p.stitches.iter().enumerate() {
+        for s in &st.sides {
+            expected.push(format!("<g class=\"stitch\" data-stitch=\"{i}\" data-panel=\"{}\" data-edge=\"{}\">", s.panel, s.edge));
+        }
+    }
+    for (j, st) in p.inner_stitches.iter().enumerate() {
+        for s in &st.sides {
+            let place = match s.place {
+                EdgePlace::Outline => String::new(),
+                EdgePlace::Hole(k) => format!(" data-hole=\"{k}\""),
+                EdgePlace::Line(k) => format!(" data-line=\"{k}\""),
+            };
+            expected.push(format!(
+                "<g class=\"stitch\" data-stitch=\"{}\" data-panel=\"{}\"{place} data-edge=\"{}\">",
+                n + j,
+                s.panel,
+                s.edge
+            ));
+        }
+    }
+    assert_eq!(groups, expected);
+    // Each numbered: the last inner stitch's number is on the sheet.
+    assert!(svg.contains(&format!(">{}</text>", n + m - 1)));
+}
+
 /// The PNG: the keyhole is an opening (transparent), the dart's inside is fabric.
 #[cfg(feature = "png")]
 #[test]

@@ -173,7 +173,7 @@ pub struct Design {
     /// Past the reference's language (patch pockets, pleats, diamond darts, folded
     /// cuffs and collars): all off by default and left out of this design space,
     /// which is the reference's; [`extended_design_space`] adds them.
-    #[param(pockets(skip), pleats(skip), darts(skip), cuff(skip), collar(skip))]
+    #[param(pockets(skip), pleats(skip), darts(skip), cuff(skip), collar(skip), sleeve(skip))]
     pub extension: Extension,
 }
 
@@ -209,6 +209,8 @@ pub struct Extension {
     pub cuff: FoldedCuff,
     /// Turtle necks twice as high, folded along the middle.
     pub collar: FoldedCollar,
+    /// Sleeves of one panel, folded along the top of the arm.
+    pub sleeve: OnePieceSleeve,
 }
 
 /// Patch pockets.
@@ -217,7 +219,8 @@ pub struct Pockets {
     /// A chest pocket on shirts.
     #[param(default = false, prob = 0.8)]
     pub shirt: bool,
-    /// Two hip pockets on two-panel and pencil skirts.
+    /// Two hip pockets on skirts (on the front panel, the top tier's of tiered skirts,
+    /// the gores either side of the front of many-panel skirts).
     #[param(default = false, prob = 0.8)]
     pub skirt: bool,
     /// A pocket on each front leg of trousers.
@@ -278,6 +281,15 @@ pub struct FoldedCollar {
     /// Turtle necks doubled: twice as high, folded down along the middle.
     #[param(default = false, prob = 0.8)]
     pub folded: bool,
+}
+
+/// One-piece sleeves.
+#[derive(Clone, Debug, PartialEq, Params)]
+pub struct OnePieceSleeve {
+    /// Each sleeve one panel, front and back joined along a fold line over the top of
+    /// the arm instead of a seam (sleeves with a straight top: not with a standing shoulder).
+    #[param(default = false, prob = 0.8)]
+    pub one_piece: bool,
 }
 
 /// Which components the garment has.

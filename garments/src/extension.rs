@@ -30,8 +30,9 @@ pub fn pleating(ext: &Extension) -> Option<[Pleating; 2]> {
 
 /// What of a bottom garment the extension adds to.
 pub enum Lower<'g> {
-    /// A skirt with one front panel (two-panel and pencil skirts): hip pockets.
-    Skirt(PanelId),
+    /// A skirt: the panels facing front, which the hip pockets go on (one panel: both
+    /// pockets on it; two: one on each).
+    Skirt(Vec<PanelId>),
     /// Trousers: a pocket on each front leg, their cuffs.
     Pants(&'g Pants),
     /// None, or another garment (nothing added).
@@ -40,10 +41,15 @@ pub enum Lower<'g> {
 
 /// Add the extension's pieces and marks to a built upper and lower garment; the
 /// pockets' panels are returned (new parts of the garment).
-pub fn apply(a: &mut Arena, ext: &Extension, upper: Option<&Shirt>, lower: Lower<'_>) -> Result<Vec<PanelId>> {
+pub fn apply(a: &mut Arena, ext: &Extension, upper: Option<&mut Shirt>, lower: Lower<'_>) -> Result<Vec<PanelId>> {
     let mut pockets = Vec::new();
     if let Some(shirt) = upper {
-        for half in [&shirt.right, &shirt.left] {
+        for half in [&mut shirt.right, &mut shirt.left] {
+            if ext.sleeve.one_piece
+                && let Some(sleeve) = half.sleeve.as_mut()
+            {
+                sleeve.join_panels(a)?;
+            }
             if ext.darts.diamond && shirt.name == "Shirt" {
                 torso_diamond_dart(a, half.ftorso.panel, ext.darts.width)?;
                 torso_diamond_dart(a, half.btorso.panel, ext.darts.width)?;
@@ -64,7 +70,7 @@ pub fn apply(a: &mut Arena, ext: &Extension, upper: Option<&Shirt>, lower: Lower
         }
     }
     match lower {
-        Lower::Skirt(front) if ext.pockets.skirt => hip_pockets(a, front, ext.pockets.width, &mut pockets)?,
+        Lower::Skirt(fronts) if ext.pockets.skirt => hip_pockets(a, &fronts, ext.pockets.width, &mut pockets)?,
         Lower::Pants(p) => {
             for half in [&p.right, &p.left] {
                 if ext.pockets.pants {
@@ -103,11 +109,20 @@ fn torso_diamond_dart(a: &mut Arena, panel: PanelId, width: f64) -> Result<()> {
     Err(refusal.expect("at least one try"))
 }
 
-/// Two pockets on a skirt front, each at most a fifth of its width, centred a
-/// quarter of the way in from each side, below the hips.
-fn hip_pockets(a: &mut Arena, front: PanelId, width: f64, out: &mut Vec<PanelId>) -> Result<()> {
-    for (k, x) in [0.28, 0.72].into_iter().enumerate() {
-        out.push(pocket(a, front, width, 0.2, [x, 0.65], &format!("pocket_{k}"))?);
+/// Two hip pockets on a skirt, below the hips: on one front panel, each at most a
+/// fifth of its width, centred a quarter of the way in from each side; on two
+/// panels (gores either side of the front), one in the middle of each, at most 45%
+/// of its width. A skirt without room for them is refused, naming the parameter.
+fn hip_pockets(a: &mut Arena, fronts: &[PanelId], width: f64, out: &mut Vec<PanelId>) -> Result<()> {
+    let spots: Vec<(PanelId, f64, f64)> = match fronts {
+        [front] => vec![(*front, 0.2, 0.28), (*front, 0.2, 0.72)],
+        _ => fronts.iter().map(|p| (*p, 0.45, 0.5)).collect(),
+    };
+    for (k, (panel, share, x)) in spots.into_iter().enumerate() {
+        let placed = pocket(a, panel, width, share, [x, 0.65], &format!("pocket_{k}")).map_err(|e| {
+            garmentcode::Error::Design(format!("extension.pockets.skirt: no room for a hip pocket on '{}': {e}", panel.name(a)))
+        })?;
+        out.push(placed);
     }
     Ok(())
 }

@@ -6,13 +6,13 @@ use crate::bodice::Shirt;
 use crate::circle_skirt::SkirtCircle;
 use crate::design::{BottomKind, Design, GodetBase, LevelsBase, UpperKind, WaistbandKind};
 use crate::extension::Lower;
-use crate::godet::GodetSkirt;
+use crate::godet::{GodetBaseSkirt, GodetSkirt};
 use crate::pants::Pants;
 use crate::shared::{BottomOptions, Fit, SkirtGroups, Symmetry};
-use crate::skirt_levels::SkirtLevels;
+use crate::skirt_levels::{SkirtLevels, Stackable};
 use crate::skirt_paneled::{PencilSkirt, Skirt2, SkirtManyPanels};
 use garmentcode::slots::{Bottom, Top};
-use garmentcode::{Align, Arena, Body, Component, InterfaceId, PanelId, Part, PartExt, Result, SlotExt, StitchRule};
+use garmentcode::{Align, Arena, Body, Component, InterfaceId, PanelId, Part, PartExt, Result, SlotExt, StitchRule, Vec3};
 
 /// The bottom garment of a design: one of the library's skirts or the pants. Each
 /// exposes a `top` to sew to the waist.
@@ -36,6 +36,42 @@ pub enum BottomGarment {
 }
 
 impl BottomGarment {
+    /// The panels of a skirt that face front (where hip pockets go): the front panel
+    /// (of the base skirt, of the top tier), or the two gores of a many-panel skirt
+    /// nearest to either side of the front, 35° off the centre (one gore if the same).
+    /// None for pants.
+    pub fn front_panels(&self, a: &Arena) -> Vec<PanelId> {
+        let stackable = |s: &Stackable| match s {
+            Stackable::Skirt2(s) => s.front.panel,
+            Stackable::Pencil(s) => s.front.panel,
+            Stackable::Circle(s) => s.front,
+        };
+        match self {
+            BottomGarment::Circle(s) => vec![s.front],
+            BottomGarment::Skirt2(s) => vec![s.front.panel],
+            BottomGarment::Pencil(s) => vec![s.front.panel],
+            BottomGarment::Godet(s) => vec![match &s.base {
+                GodetBaseSkirt::Skirt2(s) => s.front.panel,
+                GodetBaseSkirt::Pencil(s) => s.front.panel,
+            }],
+            BottomGarment::Levels(s) => s.tiers.first().map(stackable).into_iter().collect(),
+            BottomGarment::ManyPanels(s) => {
+                let centre = |p: PanelId| {
+                    let c = p.point_to_3d(a, p.center_2d(a));
+                    Vec3::new(c.x, 0.0, c.z).normalize_or_zero()
+                };
+                let nearest = |side: f64| {
+                    let aim = Vec3::new(side * 35f64.to_radians().sin(), 0.0, 35f64.to_radians().cos());
+                    s.panels.iter().map(|g| g.panel).max_by(|p, q| centre(*p).dot(aim).total_cmp(&centre(*q).dot(aim)))
+                };
+                let mut gores: Vec<PanelId> = [nearest(-1.0), nearest(1.0)].into_iter().flatten().collect();
+                gores.dedup();
+                gores
+            }
+            BottomGarment::Pants(_) => Vec::new(),
+        }
+    }
+
     /// How high the garment sits (1 = natural waist).
     pub fn rise(&self) -> f64 {
         match self {
@@ -75,7 +111,7 @@ impl MetaGarment {
     /// Build the garment a design describes on a body.
     pub fn new(a: &mut Arena, body: &Body, design: &Design) -> Result<MetaGarment> {
         let meta = &design.meta;
-        let upper = match meta.upper {
+        let mut upper = match meta.upper {
             None => None,
             Some(kind) => {
                 let fit = match kind {
@@ -126,12 +162,11 @@ impl MetaGarment {
             lower.set_panel_label(a, "leg", false);
         }
         let to_extend = match &lower {
-            Some(BottomGarment::Skirt2(s)) => Lower::Skirt(s.front.panel),
-            Some(BottomGarment::Pencil(s)) => Lower::Skirt(s.front.panel),
             Some(BottomGarment::Pants(p)) => Lower::Pants(p),
-            _ => Lower::Other,
+            Some(skirt) => Lower::Skirt(skirt.front_panels(a)),
+            None => Lower::Other,
         };
-        let pockets = crate::extension::apply(a, &design.extension, upper.as_ref(), to_extend)?;
+        let pockets = crate::extension::apply(a, &design.extension, upper.as_mut(), to_extend)?;
         Ok(MetaGarment { upper, belt, lower, pockets, stitches })
     }
 

@@ -5,6 +5,7 @@ use crate::bands::{Cuff, CuffParams};
 use crate::common::{v2, v3};
 use crate::design::{self, ArmholeShape};
 use crate::shapes;
+use garmentcode::inner::join_at_fold;
 use garmentcode::math::close_enough;
 use garmentcode::ops::even_armhole_openings;
 use garmentcode::slots::{Bottom, Top};
@@ -210,6 +211,28 @@ impl Sleeve {
         self.out = Some(out);
         self.rotate_by(a, Rotation::from_euler_xyz_degrees([0.0, 0.0, body.arm_pose_angle]));
         self.set_panel_label(a, "arm", true);
+        Ok(())
+    }
+
+    /// Make the sleeve one panel (`design.extension.sleeve.one_piece`): the back panel
+    /// joined to the front across their shoulder seam, which becomes a fold line
+    /// ([`join_at_fold`], turning by 90°: the two halves open over the arm as the two
+    /// panels were placed). The panel keeps the front's name; every other seam stays.
+    /// Sleeves with a standing shoulder (a corner in the seam) cannot fold and are
+    /// refused; a sleeveless side is left as it is.
+    pub fn join_panels(&mut self, a: &mut Arena) -> Result<()> {
+        let (Some(front), Some(back)) = (&self.front, &self.back) else { return Ok(()) };
+        if front.top.len(a) != 1 || back.top.len(a) != 1 {
+            return Err(garmentcode::Error::Design(format!(
+                "{}: a one-piece sleeve (extension.sleeve.one_piece) folds along a straight top; \
+                 its standing shoulder (sleeve.standing_shoulder) makes a corner there",
+                self.name
+            )));
+        }
+        let (top, back_top) = (front.top, back.top);
+        join_at_fold(a, &front.panel, top.edges(a)[0], &back.panel, back_top.edges(a)[0], "fold", 90.0)?;
+        self.stitches.retain(|s| s.a != top && s.b != top);
+        self.back = None;
         Ok(())
     }
 

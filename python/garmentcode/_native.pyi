@@ -74,12 +74,16 @@ class Body:
     def __getitem__(self, name: str) -> float: ...
 
 class DesignSpace:
-    """The design space: ``DesignSpace()`` (built-in) or ``DesignSpace(file)``."""
+    """The design space: ``DesignSpace()`` (built-in) or ``DesignSpace(file)``;
+    ``extended=True`` adds the parameters past the reference (``extension.*``)."""
 
-    def __init__(self, path: Optional[PathLike] = None) -> None: ...
+    def __init__(self, path: Optional[PathLike] = None, *, extended: bool = False) -> None: ...
     @property
     def source(self) -> Optional[str]:
         """The design file, or None for the built-in space."""
+    @property
+    def extended(self) -> bool:
+        """Whether the space has the ``extension.*`` parameters."""
     @property
     def params(self) -> List[Dict[str, Any]]:
         """Every parameter: path, type, range, default, default_prob, description."""
@@ -198,8 +202,15 @@ class Pattern:
         """Structural problems, as ``garmentcode check --format json``."""
     @property
     def panels(self) -> List[str]: ...
+    def panel(self, name: str) -> Dict[str, Any]:
+        """A panel as the file writes it, with ``holes``, ``lines`` (lists) and
+        ``layer`` (``"outer"``, ``"facing"``, ``"lining"``) always present; KeyError
+        for an unknown name."""
     @property
     def stitches(self) -> List[Tuple[Tuple[str, int], Tuple[str, int]]]: ...
+    @property
+    def inner_stitches(self) -> List[Tuple[Dict[str, Any], Dict[str, Any]]]:
+        """Stitches with a side on a hole (``"hole"``) or inner line (``"line"``)."""
     @property
     def design(self) -> Optional[Dict[str, Value]]: ...
     @property
@@ -244,6 +255,7 @@ def sample_dataset(
     formats: Optional[Union[str, Sequence[str]]] = None,
     layout: Optional[str] = None,
     design_space: Optional[Union[PathLike, DesignSpace]] = None,
+    extended: bool = False,
     shard: Optional[Tuple[int, int]] = None,
     progress: Optional[Callable[[int, int], Any]] = None,
     quiet: bool = True,

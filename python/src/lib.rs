@@ -357,6 +357,8 @@ struct PyDesignSpace {
     space: garmentcode::DesignSpace,
     /// The design file, or `None` for the built-in space.
     source: Option<String>,
+    /// With the parameters past the reference (`design.extension`).
+    extended: bool,
 }
 
 /// One slot of the vector encoding.
@@ -421,13 +423,22 @@ fn decode_number(t: f64, lo: f64, hi: f64) -> f64 {
 #[pymethods]
 impl PyDesignSpace {
     /// The built-in design space, or the one of a design file (its ranges and
-    /// probabilities replace the built-in ones).
+    /// probabilities replace the built-in ones). `extended=True` adds the
+    /// parameters past the reference (`design.extension`: pockets, pleats, diamond
+    /// darts, one-piece sleeves, folded cuffs and collars) after the reference's, as
+    /// `garmentcode sample --extended` does.
     #[new]
-    #[pyo3(signature = (path = None))]
-    fn new(path: Option<&Bound<'_, PyAny>>) -> PyResult<PyDesignSpace> {
+    #[pyo3(signature = (path = None, *, extended = false))]
+    fn new(path: Option<&Bound<'_, PyAny>>, extended: bool) -> PyResult<PyDesignSpace> {
         let source = path.map(path_or_str).transpose()?;
-        let (space, _) = sample_cmd::load_space(source.as_deref(), false).map_err(|e| DesignError::new_err(cli_message(e)))?;
-        Ok(PyDesignSpace { space, source })
+        let (space, _) = sample_cmd::load_space(source.as_deref(), extended).map_err(|e| DesignError::new_err(cli_message(e)))?;
+        Ok(PyDesignSpace { space, source, extended })
+    }
+
+    /// Whether the space has the parameters past the reference (`design.extension`).
+    #[getter]
+    fn extended(&self) -> bool {
+        self.extended
     }
 
     /// The design file this space comes from (`None`: built-in).
@@ -615,9 +626,11 @@ impl PyDesignSpace {
     }
 
     fn __repr__(&self) -> String {
+        let n = self.space.params().len();
+        let extended = if self.extended { ", extended" } else { "" };
         match &self.source {
-            Some(s) => format!("DesignSpace({s:?}, {} parameters)", self.space.params().len()),
-            None => format!("DesignSpace(built-in, {} parameters)", self.space.params().len()),
+            Some(s) => format!("DesignSpace({s:?}{extended}, {n} parameters)"),
+            None => format!("DesignSpace(built-in{extended}, {n} parameters)"),
         }
     }
 }
@@ -759,6 +772,25 @@ impl PyPattern {
     #[getter]
     fn panels(&self) -> Vec<String> {
         self.pattern.panels.iter().map(|p| p.name.clone()).collect()
+    }
+
+    /// A panel as the specification writes it (a dict: `vertices`, `edges`,
+    /// `translation`, `rotation`, ...), with the format extension's keys always there:
+    /// `holes` and `lines` (lists, empty when the panel has none) and `layer`
+    /// (`"outer"`, `"facing"` or `"lining"`). Raises `KeyError` for an unknown name.
+    fn panel<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
+        if self.pattern.panel(name).is_none() {
+            let known: Vec<&str> = self.pattern.panels.iter().map(|p| p.name.as_str()).collect();
+            return Err(PyKeyError::new_err(format!("no panel '{name}' (panels: {})", known.join(", "))));
+        }
+        let spec: serde_json::Value = serde_json::from_str(&self.to_json()?).map_err(|e| PatternError::new_err(e.to_string()))?;
+        let mut v = spec["pattern"]["panels"][name].clone();
+        if let Some(m) = v.as_object_mut() {
+            m.entry("holes").or_insert_with(|| serde_json::json!([]));
+            m.entry("lines").or_insert_with(|| serde_json::json!([]));
+            m.entry("layer").or_insert_with(|| serde_json::json!("outer"));
+        }
+        py.import("json")?.call_method1("loads", (v.to_string(),))
     }
 
     /// Stitches as `((panel, edge), (panel, edge))`.
@@ -1163,14 +1195,16 @@ fn builtin_designs() -> Vec<&'static str> {
 /// `jobs` (threads, default all cores), `bodies` (built-in names or body files,
 /// a list or a comma-separated string, or a folder), `formats` (`json`, `svg`,
 /// `png`, `mesh`), `layout` (`"folders"`, `"shards"` or `"shards:N"`), `design_space` (a
-/// design file or a `DesignSpace` read from one), `shard` (`(i, k)`: only the
+/// design file or a `DesignSpace` read from one), `extended` (also draw the
+/// parameters past the reference, as `--extended`; implied by a `DesignSpace` made
+/// with `extended=True`), `shard` (`(i, k)`: only the
 /// samples `i % k == i`). `progress(done, total)` is called a few times a second
 /// from the calling thread. `quiet` (the default) keeps the CLI's messages
 /// (resuming, the closing summary line) off stderr; `quiet=False` prints them.
 /// Builds run without the GIL. Returns the summary's path. Raises `InputError` for bad arguments and `DatasetError` when samples
 /// fail or the run is interrupted (Ctrl-C, or an exception from `progress`).
 #[pyfunction]
-#[pyo3(signature = (n, seed, out, *, jobs = None, bodies = None, formats = None, layout = None, design_space = None, shard = None, progress = None, quiet = true))]
+#[pyo3(signature = (n, seed, out, *, jobs = None, bodies = None, formats = None, layout = None, design_space = None, extended = false, shard = None, progress = None, quiet = true))]
 fn sample_dataset(
     py: Python<'_>,
     n: u64,
@@ -1181,6 +1215,7 @@ fn sample_dataset(
     formats: Option<&Bound<'_, PyAny>>,
     layout: Option<String>,
     design_space: Option<&Bound<'_, PyAny>>,
+    extended: bool,
     shard: Option<(u64, u64)>,
     progress: Option<Py<PyAny>>,
     quiet: bool,
@@ -1198,11 +1233,11 @@ fn sample_dataset(
             Err(_) => Some(f.extract::<Vec<String>>()?.join(",")),
         },
     };
-    let design_space = match design_space {
-        None => None,
+    let (design_space, extended) = match design_space {
+        None => (None, extended),
         Some(o) => match o.cast::<PyDesignSpace>() {
-            Ok(s) => s.get().source.clone(),
-            Err(_) => Some(path_or_str(o)?),
+            Ok(s) => (s.get().source.clone(), extended || s.get().extended),
+            Err(_) => (Some(path_or_str(o)?), extended),
         },
     };
     let out = PathBuf::from(path_or_str(out)?);
@@ -1211,7 +1246,7 @@ fn sample_dataset(
         seed: Some(seed),
         out: out.clone(),
         design_space,
-        extended: false,
+        extended,
         bodies: bodies_arg(bodies)?,
         jobs,
         shard: shard.map(|(i, k)| format!("{i}/{k}")),

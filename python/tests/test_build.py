@@ -224,3 +224,29 @@ def test_the_format_extension_reads_draws_and_meshes():
     assert len(mesh.stitch_pairs) == len(pattern.stitches) + len(sides)
     labels = set(mesh.files()[f"{pattern.name}_vertex_labels.yaml"].decode().split())
     assert any(label.startswith("fold_") for label in labels)
+
+
+def test_pattern_panel_gives_holes_lines_and_layer():
+    path = REPO / "garmentcode" / "tests" / "data" / "extension" / "specification.json"
+    pattern = gc.Pattern.from_json(path)
+    front = pattern.panel("front")
+    assert [h["kind"] for h in front["holes"]] == ["dart", "cut"]
+    assert [line["kind"] for line in front["lines"]] == ["placement"]
+    assert front["layer"] == "outer"
+    assert pattern.panel("front_facing")["layer"] == "facing"
+    sleeve = pattern.panel("sleeve")
+    assert (sleeve["holes"], [line["kind"] for line in sleeve["lines"]]) == ([], ["fold"])
+    assert sleeve["vertices"] == pattern.spec["pattern"]["panels"]["sleeve"]["vertices"]
+    # A pattern without the extension: the keys are there, empty.
+    shirt = gc.build("t-shirt")
+    assert {k: shirt.panel("right_ftorso")[k] for k in ("holes", "lines", "layer")} == {"holes": [], "lines": [], "layer": "outer"}
+    with pytest.raises(KeyError, match="no panel 'nowhere'"):
+        pattern.panel("nowhere")
+
+
+def test_the_one_piece_sleeve_of_the_pocket_shirt():
+    shirt = gc.build("pocket-shirt")
+    assert "right_sleeve_b" not in shirt.panels
+    sleeve = shirt.panel("right_sleeve_f")
+    assert [(line["kind"], line["angle"]) for line in sleeve["lines"]] == [("fold", 90.0)]
+    assert shirt.design["extension.sleeve.one_piece"] is True

@@ -63,6 +63,26 @@ def test_the_space_samples_the_dataset_s_designs(tmp_path):
         assert space.sample(11, i) == written
 
 
+def test_the_extended_space_samples_the_extension_like_the_cli(cli, tmp_path):
+    plain, extended = gc.DesignSpace(), gc.DesignSpace(extended=True)
+    assert (plain.extended, extended.extended) == (False, True)
+    assert not any(p.startswith("extension.") for p in plain.paths)
+    assert extended.paths[: len(plain.paths)] == plain.paths
+    assert "extension.sleeve.one_piece" in extended.paths and "extension.pockets.skirt" in extended.paths
+    assert "extended" in repr(extended)
+    # The same seed draws the same reference parameters; some designs use the extension.
+    drawn = [extended.sample(5, i) for i in range(8)]
+    assert any(any(v != extended.default()[k] for k, v in d.items() if k.startswith("extension.")) for d in drawn)
+    gc.sample_dataset(6, 5, tmp_path / "py", jobs=1, extended=True)
+    gc.sample_dataset(6, 5, tmp_path / "space", jobs=1, design_space=extended)
+    run_cli(cli, "sample", "--n", "6", "--seed", "5", "--out", str(tmp_path / "cli"), "--jobs", "1", "--extended")
+    assert content(tmp_path / "py") == content(tmp_path / "cli")
+    assert content(tmp_path / "space")[0] == content(tmp_path / "cli")[0]
+    for i in range(6):
+        written = extended.validate((tmp_path / "py" / f"rand_{i:07d}" / "design_params.yaml").read_text())
+        assert extended.sample(5, i) == written
+
+
 def test_iter_shards_yields_every_sample_as_a_dict(tmp_path):
     gc.sample_dataset(7, 2, tmp_path / "s", layout="shards:3", jobs=1)
     gc.sample_dataset(7, 2, tmp_path / "f", jobs=1)

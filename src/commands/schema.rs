@@ -1,4 +1,4 @@
-//! `garmentcode schema [--format reference-yaml|json-schema|table] [--design NAME|FILE.yaml]`
+//! `garmentcode schema [--format reference-yaml|json-schema|table] [--design NAME|FILE.yaml] [--extended]`
 
 use crate::cli::{SchemaArgs, SchemaFormat};
 use crate::commands::CliError;
@@ -7,7 +7,7 @@ use garmentcode::io::write_design;
 use garments::Design;
 
 pub fn run(args: SchemaArgs) -> Result<i32, CliError> {
-    let space = Design::design_space();
+    let space = if args.extended { garments::design::extended_design_space() } else { Design::design_space() };
     if args.design.is_some() && args.format != SchemaFormat::ReferenceYaml {
         return Err(CliError::Usage("--design writes a design file: it goes with --format reference-yaml (the default)".into()));
     }
@@ -17,7 +17,9 @@ pub fn run(args: SchemaArgs) -> Result<i32, CliError> {
         SchemaFormat::ReferenceYaml => match &args.design {
             None => out!("{}", space.to_yaml()),
             Some(arg) => {
+                // A design using the extension is written with it (as `build` writes it).
                 let (design, _) = crate::commands::load_design(arg)?;
+                let space = if args.extended { space } else { garments::design::space_of(&design) };
                 out!("{}", write_design(&design, &space))
             }
         },

@@ -13,7 +13,7 @@ use crate::arc::SvgArc;
 use crate::bezier::Bezier;
 use crate::error::{Error, Result};
 use crate::math::{Vec2, Vec3, rel_to_abs, rotate2d, vector_angle_clamped};
-use crate::pattern::{Curvature, EdgeSpec, HoleKind, LineKind, PanelSpec, Pattern};
+use crate::pattern::{Curvature, EdgePlace, EdgeSpec, HoleKind, LineKind, PanelSpec, Pattern};
 
 /// An sRGB colour.
 pub type Rgb = [u8; 3];
@@ -145,6 +145,16 @@ pub struct PlacedPanel {
 }
 
 impl PlacedPanel {
+    /// Edge `edge` of the outline, of hole `k` or of inner line `k`, if there is one.
+    pub fn edge_segment(&self, place: EdgePlace, edge: usize) -> Option<&Segment> {
+        let is_hole = |m: &&Mark| matches!(m.kind, MarkKind::Cut | MarkKind::Dart);
+        match place {
+            EdgePlace::Outline => self.segments.get(edge),
+            EdgePlace::Hole(k) => self.marks.iter().filter(is_hole).nth(k)?.segments.get(edge),
+            EdgePlace::Line(k) => self.marks.iter().filter(|m| !is_hole(m)).nth(k)?.segments.get(edge),
+        }
+    }
+
     /// Move the panel, its marks and its box by `d`.
     fn translate(&mut self, d: Vec2) {
         for s in self.segments.iter_mut().chain(self.marks.iter_mut().flat_map(|m| &mut m.segments)) {
@@ -268,11 +278,15 @@ impl Text {
 /// One side of a stitch, marked on the sheet.
 #[derive(Clone, Debug)]
 pub struct Marker {
-    /// Index of the stitch in `pattern.stitches` (the number shown).
+    /// The stitch's number (shown): its index in `pattern.stitches`, or for inner
+    /// stitch `j` (format extension) `pattern.stitches.len() + j`, as the box mesh's
+    /// `stitch_K` labels count them.
     pub stitch: usize,
     /// Index of the placed panel in [`Sheet::panels`].
     pub panel: usize,
-    /// Edge index within the panel.
+    /// Where the edge is: the panel's outline, one of its holes or inner lines.
+    pub place: EdgePlace,
+    /// Edge index within its outline, hole or line.
     pub edge: usize,
     /// Colour of the stitch.
     pub color: Rgb,
@@ -289,6 +303,11 @@ pub struct Marker {
 }
 
 impl Marker {
+    /// The edge marked, on `sheet` (the one the marker was placed on).
+    pub fn segment<'s>(&self, sheet: &'s Sheet) -> &'s Segment {
+        sheet.panels[self.panel].edge_segment(self.place, self.edge).expect("a marker's edge exists")
+    }
+
     /// The stitch number, white and centred on the disc.
     pub fn label(&self) -> Text {
         Text {
@@ -728,20 +747,20 @@ fn markers(p: &Pattern, panels: &[PlacedPanel], names: &[BBox]) -> Result<Vec<Ma
     let by_name: HashMap<&str, usize> = panels.iter().enumerate().map(|(k, q)| (q.name.as_str(), k)).collect();
     let mut polygons: Vec<Option<Vec<Vec2>>> = vec![None; panels.len()];
     let mut taken: Vec<BBox> = names.to_vec();
-    let mut out = Vec::with_capacity(2 * p.stitches.len());
-    for (i, st) in p.stitches.iter().enumerate() {
-        for side in &st.sides {
-            let &k = by_name
-                .get(side.panel.as_str())
-                .ok_or_else(|| Error::Input(format!("stitch {i} refers to a missing panel '{}'", side.panel)))?;
+    let mut out = Vec::with_capacity(2 * (p.stitches.len() + p.inner_stitches.len()));
+    // The stitches, then the inner stitches numbered on after them.
+    let outline = p.stitches.iter().map(|st| st.sides.each_ref().map(|s| (s.panel.as_str(), EdgePlace::Outline, s.edge)));
+    let inner = p.inner_stitches.iter().map(|st| st.sides.each_ref().map(|s| (s.panel.as_str(), s.place, s.edge)));
+    for (i, sides) in outline.chain(inner).enumerate() {
+        for (panel, place, edge) in sides {
+            let &k = by_name.get(panel).ok_or_else(|| Error::Input(format!("stitch {i} refers to a missing panel '{panel}'")))?;
             let q = &panels[k];
             let seg = q
-                .segments
-                .get(side.edge)
-                .ok_or_else(|| Error::Input(format!("stitch {i} refers to a missing edge {} of panel '{}'", side.edge, side.panel)))?;
+                .edge_segment(place, edge)
+                .ok_or_else(|| Error::Input(format!("stitch {i} refers to a missing edge {edge} of panel '{panel}'")))?;
             let poly = polygons[k].get_or_insert_with(|| polygon(&q.segments, 16));
             let (centre, radius, anchor, leader) = place_marker(seg, q.ccw, poly, &taken);
-            let marker = Marker { stitch: i, panel: k, edge: side.edge, color: stitch_color(i), centre, radius, anchor, leader };
+            let marker = Marker { stitch: i, panel: k, place, edge, color: stitch_color(i), centre, radius, anchor, leader };
             taken.push(marker.bbox());
             out.push(marker);
         }

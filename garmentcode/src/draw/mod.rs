@@ -8,9 +8,11 @@
 //! reference's pink with its outline and panel names.
 //!
 //! On top of that the drawing marks the stitches (the reference draws none): every
-//! stitch gets a colour and a numbered marker (its index in `pattern.stitches`) on
-//! both of its edges, with the edges themselves traced in that colour, so one sees
-//! what sews to what. Vertex and edge indices (the reference's `view_ids`) can be
+//! stitch gets a colour and a numbered marker (its index in `pattern.stitches`; the
+//! format extension's inner stitches are numbered on after them, as the box mesh's
+//! `stitch_K` labels count them) on both of its edges (on a hole or inner line for an
+//! inner stitch), with the edges themselves traced in that colour, so one sees what
+//! sews to what. Vertex and edge indices (the reference's `view_ids`) can be
 //! switched on.
 //!
 //! Markers never overlap each other or a panel name. Where many short stitched

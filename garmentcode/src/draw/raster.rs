@@ -176,7 +176,7 @@ pub fn render(sheet: &Sheet, opts: &DrawOptions) -> Result<(Vec<u8>, f64)> {
     draw_texts(&mut pm, sheet, TextKind::MarkLabel, tf);
     // Every trace and leader line first, so that none runs over a disc.
     for m in &sheet.markers {
-        let seg = &sheet.panels[m.panel].segments[m.edge];
+        let seg = m.segment(sheet);
         let mut pb = PathBuilder::new();
         pb.move_to(seg.start.x as f32, seg.start.y as f32);
         push_segment(&mut pb, seg);

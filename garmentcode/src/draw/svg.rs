@@ -14,6 +14,7 @@ use super::layout::{
     PlacedPanel, Rgb, Segment, Shape, Sheet, Text, TextKind,
 };
 use crate::math::Vec2;
+use crate::pattern::EdgePlace;
 
 /// A number with at most 3 decimals, trailing zeros dropped, never `-0`.
 pub fn num(x: f64) -> String {
@@ -212,7 +213,7 @@ fn markers(out: &mut String, sheet: &Sheet) {
     }
     out.push_str("<g class=\"stitches\" font-family=\"sans-serif\">\n<g class=\"traces\" fill=\"none\">\n");
     for m in &sheet.markers {
-        let s = &sheet.panels[m.panel].segments[m.edge];
+        let s = m.segment(sheet);
         let color = rgb(m.color);
         let _ = writeln!(
             out,
@@ -233,9 +234,14 @@ fn markers(out: &mut String, sheet: &Sheet) {
     }
     out.push_str("</g>\n");
     for m in &sheet.markers {
+        let place = match m.place {
+            EdgePlace::Outline => String::new(),
+            EdgePlace::Hole(k) => format!(" data-hole=\"{k}\""),
+            EdgePlace::Line(k) => format!(" data-line=\"{k}\""),
+        };
         let _ = writeln!(
             out,
-            "<g class=\"stitch\" data-stitch=\"{}\" data-panel=\"{}\" data-edge=\"{}\">",
+            "<g class=\"stitch\" data-stitch=\"{}\" data-panel=\"{}\"{place} data-edge=\"{}\">",
             m.stitch,
             escape(&sheet.panels[m.panel].name),
             m.edge

@@ -241,7 +241,7 @@ fn markers_point_into_their_panel() {
         let sheet = layout::layout(&p, &DrawOptions::default()).unwrap();
         for m in sheet.markers.iter().filter(|m| !m.leader) {
             let q = &sheet.panels[m.panel];
-            let seg = &q.segments[m.edge];
+            let seg = m.segment(&sheet);
             let on_edge = (0..=64).any(|k| (seg.point(k as f64 / 64.0) - m.anchor).length() < 0.05 * seg.start.distance(seg.end).max(1.0));
             assert!(on_edge, "{name}: marker of stitch {} on {} edge {} is not anchored on its edge", m.stitch, q.name, m.edge);
             let probe = m.anchor + (m.centre - m.anchor).normalize() * 0.3;

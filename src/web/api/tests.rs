@@ -651,3 +651,49 @@ fn a_drape_is_started_polled_replaced_and_cancelled() {
     let (status, _) = call("GET", "/api/drape", "");
     assert_eq!(status, 405);
 }
+
+#[test]
+fn the_extension_is_in_the_schema_and_its_constructs_reach_the_pattern() {
+    // The page's controls come from the schema: every `design.extension` parameter is
+    // there, in its own groups, after the reference's.
+    let (status, s) = call("GET", "/api/schema", "");
+    assert_eq!(status, 200);
+    let paths: Vec<&str> = s["params"].as_array().unwrap().iter().map(|p| p["path"].as_str().unwrap()).collect();
+    let expected: Vec<String> = garments::design::extended_design_space()
+        .params()
+        .iter()
+        .filter(|p| p.path.starts_with("extension."))
+        .map(|p| p.path.clone())
+        .collect();
+    let served: Vec<&str> = paths.iter().copied().filter(|p| p.starts_with("extension.")).collect();
+    assert_eq!(served, expected);
+    for p in ["extension.pockets.shirt", "extension.pockets.skirt", "extension.pleats.style", "extension.sleeve.one_piece"] {
+        assert!(served.contains(&p), "{p}");
+    }
+    let first_extension = paths.iter().position(|p| p.starts_with("extension.")).unwrap();
+    assert!(paths[first_extension..].iter().all(|p| p.starts_with("extension.")));
+    let groups: Vec<&str> = s["groups"].as_array().unwrap().iter().map(|g| g.as_str().unwrap()).collect();
+    assert!(groups.contains(&"extension") && groups.contains(&"extension.pockets"));
+    let (status, js) = call("GET", "/api/json-schema", "");
+    assert_eq!(status, 200);
+    assert!(js.to_string().contains("one_piece"), "the JSON Schema holds the extension");
+    // A shirt with a pocket: the piece, its placement line, and the stitches onto it.
+    let design = json!({ "meta.upper": "Shirt", "sleeve.sleeveless": false, "extension.pockets.shirt": true });
+    let (status, r) = post("/api/pattern", json!({ "design": design, "body": "mean_all" }));
+    assert_eq!((status, &r["ok"]), (200, &json!(true)), "{r}");
+    let pattern = &r["specification"]["pattern"];
+    assert!(pattern["panels"].get("right_ftorso_pocket").is_some());
+    assert_eq!(pattern["panels"]["right_ftorso"]["lines"][0]["kind"], "placement");
+    let inner = pattern["inner_stitches"].as_array().unwrap();
+    assert_eq!(inner.len(), 3, "the pocket's sides and bottom");
+    assert!(inner.iter().all(|st| st[1]["panel"] == "right_ftorso" && st[1]["line"] == 0));
+    assert_eq!(r["specification"]["properties"]["extension_version"], 1);
+    let svg = r["svg"].as_str().unwrap();
+    assert!(svg.contains("class=\"placement\""), "the placement line is drawn");
+    // The built-in pocket-shirt as the page loads it: its fold lines drawn.
+    let (_, d) = call("GET", "/api/design/pocket-shirt", "");
+    assert_eq!(d["design"]["extension.sleeve.one_piece"], true);
+    let (_, r) = post("/api/pattern", json!({ "design": d["design"], "body": "mean_all" }));
+    assert_eq!(r["ok"], true, "{r}");
+    assert!(r["svg"].as_str().unwrap().contains("class=\"fold\""));
+}
