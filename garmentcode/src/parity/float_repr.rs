@@ -51,7 +51,20 @@ impl TextOut for Vec<u8> {
 /// the shortest digit string that reads back as `x`, the one closest to `x`. Its
 /// text is only taken apart into digits and exponent here and laid out the way
 /// Python does; the unit tests check it against the `{:e}` digits.
+#[inline]
 pub(crate) fn write_python_float<O: TextOut>(out: &mut O, x: f64) {
+    // Most numbers (a magnitude from 1e-4 to 1e15: their shortest digits have an
+    // exponent from -4 to 14) are laid out by zmij exactly as Python does; the
+    // others are seen to below.
+    if (1e-4..1e15).contains(&x.abs()) {
+        out.push_text(zmij::Buffer::new().format_finite(x));
+    } else {
+        write_other_float(out, x);
+    }
+}
+
+/// [`write_python_float`] of the numbers outside its common range.
+fn write_other_float<O: TextOut>(out: &mut O, x: f64) {
     if x == 0.0 {
         out.push_text("0.0");
         return;
