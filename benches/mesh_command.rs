@@ -97,7 +97,10 @@ fn main() {
     for (b, (label, _)) in binaries.iter().enumerate() {
         let ((cpu_median, cpu_text), (_, wall_text)) = (quantiles(&cpu[b]), quantiles(&wall[b]));
         println!("{label}: garmentcode mesh, whole process, per garment over {} cases: CPU {cpu_text}; wall {wall_text}", specs.len());
-        println!("{label}: the reference takes {REFERENCE_S} s of CPU per garment (median): x{:.0} at the median", REFERENCE_S / cpu_median);
+        println!(
+            "{label}: the reference takes {REFERENCE_S} s of CPU per garment (median): x{:.0} at the median",
+            REFERENCE_S / cpu_median
+        );
         medians.push(cpu_median);
     }
     if binaries.len() == 2 {
