@@ -618,3 +618,42 @@ fn yaml_key(s: &str) -> String {
 pub fn read_segmentation(text: &str) -> Vec<Vec<String>> {
     text.lines().map(|l| l.split(',').map(str::to_string).collect()).collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Indices are written as their decimal text, from the table and past its end alike,
+    /// whatever follows them on the line.
+    #[test]
+    fn lines_of_indices_read_as_the_numbers() {
+        let decimals = Decimals::new(120);
+        let mut line = Line::new();
+        for n in (0..=250).chain([999, 1_000_000, 99_999_999, 100_000_000, usize::MAX]) {
+            line.clear();
+            line.byte(b'f');
+            for k in 0..3 {
+                line.byte(b' ');
+                line.int(&decimals, n.saturating_add(k));
+                line.byte(b'/');
+                line.int(&decimals, n);
+            }
+            line.byte(b'\n');
+            let expected = format!("f {n}/{n} {}/{n} {}/{n}\n", n.saturating_add(1), n.saturating_add(2));
+            assert_eq!(std::str::from_utf8(line.bytes()).unwrap(), expected);
+        }
+    }
+
+    /// The texture's pixel bounds are the floor and ceiling of the triangle's bounds,
+    /// limited to the image, as `f64::floor` and `f64::ceil` give them.
+    #[test]
+    fn pixel_bounds_are_floor_and_ceiling() {
+        let max = 512.0;
+        for i in -2000..=2000 {
+            for x in [i as f64 * 0.37, i as f64, i as f64 + 0.5, i as f64 - 1e-12, -0.0] {
+                assert_eq!(floor_within(x, max), x.floor().clamp(0.0, max) as usize, "{x}");
+                assert_eq!(ceil_within(x, max), x.ceil().clamp(0.0, max) as usize, "{x}");
+            }
+        }
+    }
+}
