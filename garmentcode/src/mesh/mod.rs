@@ -619,9 +619,14 @@ impl BoxMesh {
 
         // Assembly.
         let n_stitch_vertices = globals.len();
-        let mut vertices: Vec<Vec3> = globals.iter().map(|g| g.pos).collect();
-        let mut labels: Vec<VertexLabel> = globals.iter().map(|g| VertexLabel::Stitch(g.labels.clone())).collect();
-        let mut faces = Vec::new();
+        // Sized before they are filled (a mesh's vectors are megabytes: growing by doubling
+        // copies them and touches fresh memory at every step).
+        let n_vertices = n_stitch_vertices + panels.iter().map(|p| p.points.len() - p.n_stitch_side).sum::<usize>();
+        let mut vertices: Vec<Vec3> = Vec::with_capacity(n_vertices);
+        vertices.extend(globals.iter().map(|g| g.pos));
+        let mut labels: Vec<VertexLabel> = Vec::with_capacity(n_vertices);
+        labels.extend(globals.iter().map(|g| VertexLabel::Stitch(g.labels.clone())));
+        let mut faces = Vec::with_capacity(panels.iter().map(|p| p.faces.len()).sum());
         let mut lens = RestLengths::default();
         let mut vertex_labels: Vec<(String, Vec<usize>)> = Vec::new();
         for (pi, panel) in panels.iter_mut().enumerate() {

@@ -2,7 +2,6 @@
 //! and segmentation files.
 
 use std::borrow::Cow;
-use std::fmt::Write as _;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -143,19 +142,20 @@ const CHUNK: usize = 256 * 1024;
 /// The files of a box mesh (the mesh borrowed or owned), written one at a time into any
 /// writer ([`MeshFiles::write`]) through one buffer of a few hundred kilobytes, so that
 /// no file's whole text is held in memory. What two files share (the vertices' `x y z`
-/// text of the OBJ and the PLY, the texture coordinates of the OBJ and the texture) is
-/// made once, when first needed.
+/// text of the OBJ and the PLY, the texture coordinates of the OBJ and the texture, the
+/// decimal text of indices) is made once, when first needed.
 pub struct MeshFiles<'a> {
     mesh: Cow<'a, BoxMesh>,
     xyz: OnceLock<Coordinates>,
     uvs: OnceLock<Vec<Vec2>>,
+    decimals: OnceLock<Decimals>,
 }
 
 impl<'a> MeshFiles<'a> {
     /// The files of `mesh` (`Cow::Borrowed(&mesh)`, or `Cow::Owned(mesh)` for files that
     /// outlive the caller's mesh).
     pub fn new(mesh: Cow<'a, BoxMesh>) -> MeshFiles<'a> {
-        MeshFiles { mesh, xyz: OnceLock::new(), uvs: OnceLock::new() }
+        MeshFiles { mesh, xyz: OnceLock::new(), uvs: OnceLock::new(), decimals: OnceLock::new() }
     }
 
     /// The mesh.
@@ -174,7 +174,7 @@ impl<'a> MeshFiles<'a> {
     /// # Panics
     /// If `index` is not below `FILE_SUFFIXES.len()`.
     pub fn write(&self, index: usize, out: &mut dyn Write) -> io::Result<()> {
-        let mut text = Chunked { buf: String::with_capacity(CHUNK + 4096), out };
+        let mut text = Chunked { buf: Vec::with_capacity(CHUNK + 4096), out };
         match index {
             OBJ => self.obj(&mut text)?,
             MTL => self.material(&mut text),
@@ -205,33 +205,46 @@ impl<'a> MeshFiles<'a> {
         self.uvs.get_or_init(|| self.mesh.texture_coordinates())
     }
 
+    /// The decimal text of every index the files write: vertex and texture ids, counted
+    /// from 0 and from 1.
+    fn decimals(&self) -> &Decimals {
+        self.decimals.get_or_init(|| {
+            let m = &*self.mesh;
+            let texture_ids = m.panels.iter().map(|p| p.points.len()).sum::<usize>();
+            Decimals::new(m.vertices.len().max(texture_ids) + 1)
+        })
+    }
+
     fn obj(&self, text: &mut Chunked) -> io::Result<()> {
-        let (m, xyz) = (&*self.mesh, self.xyz());
+        let (m, xyz, decimals) = (&*self.mesh, self.xyz(), self.decimals());
         let _ = writeln!(text.buf, "mtllib {}_material.mtl", m.file_prefix());
         for v in 0..m.vertices.len() {
-            text.buf.push_str("v ");
-            text.buf.push_str(xyz.get(v));
-            text.buf.push('\n');
+            text.buf.extend_from_slice(b"v ");
+            text.buf.extend_from_slice(xyz.get(v));
+            text.buf.push(b'\n');
             text.line_end()?;
         }
         for uv in self.uvs() {
-            text.buf.push_str("vt ");
+            text.buf.extend_from_slice(b"vt ");
             write_python_float(&mut text.buf, uv.x);
-            text.buf.push(' ');
+            text.buf.push(b' ');
             write_python_float(&mut text.buf, uv.y);
-            text.buf.push('\n');
+            text.buf.push(b'\n');
             text.line_end()?;
         }
-        text.buf.push_str("s 1\nusemtl panels_texture\n");
+        text.buf.extend_from_slice(b"s 1\nusemtl panels_texture\n");
+        let mut line = Line::new();
         for f in &m.faces {
-            text.buf.push('f');
+            line.clear();
+            line.byte(b'f');
             for k in 0..3 {
-                text.buf.push(' ');
-                push_int(&mut text.buf, f.vertices[k] + 1);
-                text.buf.push('/');
-                push_int(&mut text.buf, f.uvs[k] + 1);
+                line.byte(b' ');
+                line.int(decimals, f.vertices[k] + 1);
+                line.byte(b'/');
+                line.int(decimals, f.uvs[k] + 1);
             }
-            text.buf.push('\n');
+            line.byte(b'\n');
+            text.buf.extend_from_slice(line.bytes());
             text.line_end()?;
         }
         Ok(())
@@ -250,9 +263,10 @@ impl<'a> MeshFiles<'a> {
             if area == 0.0 || !area.is_finite() {
                 continue;
             }
+            // The pixels whose centres the triangle's bounding box holds, within the image.
             let (lo, hi) = (a.min(b).min(c), a.max(b).max(c));
-            let (x0, x1) = ((lo.x.floor().max(0.0)) as usize, (hi.x.ceil().min(scale)) as usize);
-            let (y0, y1) = ((lo.y.floor().max(0.0)) as usize, (hi.y.ceil().min(scale)) as usize);
+            let (x0, x1) = (floor_within(lo.x, scale), ceil_within(hi.x, scale));
+            let (y0, y1) = (floor_within(lo.y, scale), ceil_within(hi.y, scale));
             for y in y0..y1 {
                 for x in x0..x1 {
                     // Pixels whose centre is inside (or on) the triangle.
@@ -286,18 +300,21 @@ impl<'a> MeshFiles<'a> {
     }
 
     fn segmentation(&self, text: &mut Chunked) -> io::Result<()> {
-        let m = &*self.mesh;
+        let (m, decimals) = (&*self.mesh, self.decimals());
+        let mut line = Line::new();
         for label in &m.labels {
             match label {
                 VertexLabel::Stitch(ks) => {
                     for (i, k) in ks.iter().enumerate() {
-                        text.buf.push_str(if i == 0 { "stitch_" } else { ",stitch_" });
-                        push_int(&mut text.buf, *k);
+                        text.buf.extend_from_slice(if i == 0 { b"stitch_" } else { b",stitch_" });
+                        line.clear();
+                        line.int(decimals, *k);
+                        text.buf.extend_from_slice(line.bytes());
                     }
                 }
-                VertexLabel::Panel(p) => text.buf.push_str(&m.panels[*p].name),
+                VertexLabel::Panel(p) => text.buf.extend_from_slice(m.panels[*p].name.as_bytes()),
             }
-            text.buf.push('\n');
+            text.buf.push(b'\n');
             text.line_end()?;
         }
         Ok(())
@@ -329,20 +346,24 @@ impl<'a> MeshFiles<'a> {
     }
 
     fn vertex_labels_yaml(&self, text: &mut Chunked) -> io::Result<()> {
-        let labels = &self.mesh.vertex_labels;
+        let (labels, decimals) = (&self.mesh.vertex_labels, self.decimals());
         if labels.is_empty() {
-            text.buf.push_str("{}\n");
+            text.buf.extend_from_slice(b"{}\n");
         }
+        let mut line = Line::new();
         for (label, ids) in labels {
             let _ = writeln!(text.buf, "{}:", yaml_key(label));
             if ids.is_empty() {
                 text.buf.pop();
-                text.buf.push_str(" []\n");
+                text.buf.extend_from_slice(b" []\n");
             }
             for id in ids {
-                text.buf.push_str("- ");
-                push_int(&mut text.buf, *id);
-                text.buf.push('\n');
+                line.clear();
+                line.byte(b'-');
+                line.byte(b' ');
+                line.int(decimals, *id);
+                line.byte(b'\n');
+                text.buf.extend_from_slice(line.bytes());
                 text.line_end()?;
             }
         }
@@ -350,28 +371,31 @@ impl<'a> MeshFiles<'a> {
     }
 
     fn welded_obj_metres(&self, text: &mut Chunked) -> io::Result<()> {
-        let m = &*self.mesh;
+        let (m, decimals) = (&*self.mesh, self.decimals());
         for v in &m.vertices {
-            text.buf.push_str("v ");
+            text.buf.extend_from_slice(b"v ");
             push_xyz_line(&mut text.buf, *v / 100.0);
-            text.buf.push('\n');
+            text.buf.push(b'\n');
             text.line_end()?;
         }
+        let mut line = Line::new();
         for f in &m.faces {
-            text.buf.push('f');
+            line.clear();
+            line.byte(b'f');
             for v in f.vertices {
-                text.buf.push(' ');
-                push_int(&mut text.buf, v + 1);
+                line.byte(b' ');
+                line.int(decimals, v + 1);
             }
-            text.buf.push('\n');
+            line.byte(b'\n');
+            text.buf.extend_from_slice(line.bytes());
             text.line_end()?;
         }
         Ok(())
     }
 
     fn ply(&self, text: &mut Chunked) -> io::Result<()> {
-        let (m, xyz) = (&*self.mesh, self.xyz());
-        text.buf.push_str("ply\nformat ascii 1.0\ncomment garmentcode box mesh, cm\n");
+        let (m, xyz, decimals) = (&*self.mesh, self.xyz(), self.decimals());
+        text.buf.extend_from_slice(b"ply\nformat ascii 1.0\ncomment garmentcode box mesh, cm\n");
         for (i, p) in m.panels.iter().enumerate() {
             let _ = writeln!(text.buf, "comment panel {i} {}", p.name);
             text.line_end()?;
@@ -383,35 +407,70 @@ impl<'a> MeshFiles<'a> {
             m.vertices.len(),
             m.faces.len()
         );
+        let mut line = Line::new();
         for (v, label) in m.labels.iter().enumerate() {
-            let (segment, stitch) = match label {
-                VertexLabel::Stitch(ks) => (-1, ks.first().map_or(-1, |&k| k as i64)),
-                VertexLabel::Panel(p) => (*p as i64, -1),
-            };
-            text.buf.push_str(xyz.get(v));
-            text.buf.push(' ');
-            text.buf.push_str(itoa::Buffer::new().format(segment));
-            text.buf.push(' ');
-            text.buf.push_str(itoa::Buffer::new().format(stitch));
-            text.buf.push('\n');
+            text.buf.extend_from_slice(xyz.get(v));
+            // ` segment stitch`: the panel and -1, or -1 and the first stitch (-1 if none).
+            line.clear();
+            line.byte(b' ');
+            match label {
+                VertexLabel::Stitch(ks) => {
+                    line.byte(b'-');
+                    line.byte(b'1');
+                    line.byte(b' ');
+                    match ks.first() {
+                        Some(&k) => line.int(decimals, k),
+                        None => {
+                            line.byte(b'-');
+                            line.byte(b'1');
+                        }
+                    }
+                }
+                VertexLabel::Panel(p) => {
+                    line.int(decimals, *p);
+                    line.byte(b' ');
+                    line.byte(b'-');
+                    line.byte(b'1');
+                }
+            }
+            line.byte(b'\n');
+            text.buf.extend_from_slice(line.bytes());
             text.line_end()?;
         }
         for f in &m.faces {
-            text.buf.push('3');
+            line.clear();
+            line.byte(b'3');
             for v in f.vertices {
-                text.buf.push(' ');
-                push_int(&mut text.buf, v);
+                line.byte(b' ');
+                line.int(decimals, v);
             }
-            text.buf.push('\n');
+            line.byte(b'\n');
+            text.buf.extend_from_slice(line.bytes());
             text.line_end()?;
         }
         Ok(())
     }
 }
 
+/// `x.floor()` limited to `0..=max` (a whole number), as a pixel index, without a call to
+/// the maths library (`x` is finite).
+fn floor_within(x: f64, max: f64) -> usize {
+    // For x ≥ 0 the conversion truncates, which is the floor; below 0 it gives 0, as
+    // `x.floor().max(0.0)` does.
+    x.min(max) as usize
+}
+
+/// `x.ceil()` limited to `0..=max` (a whole number), as a pixel index (`x` is finite).
+fn ceil_within(x: f64, max: f64) -> usize {
+    let x = x.min(max);
+    let t = x as usize;
+    // The conversion truncates (to 0 below 0); a fraction left over rounds up.
+    if (t as f64) < x { t + 1 } else { t }
+}
+
 /// A text file being written: laid out in `buf`, handed to `out` a chunk at a time.
 struct Chunked<'w> {
-    buf: String,
+    buf: Vec<u8>,
     out: &'w mut dyn Write,
 }
 
@@ -419,7 +478,7 @@ impl Chunked<'_> {
     /// After a line: hands the text on once a chunk's worth is laid out.
     fn line_end(&mut self) -> io::Result<()> {
         if self.buf.len() >= CHUNK {
-            self.out.write_all(self.buf.as_bytes())?;
+            self.out.write_all(&self.buf)?;
             self.buf.clear();
         }
         Ok(())
@@ -427,7 +486,75 @@ impl Chunked<'_> {
 
     /// Hands the rest on.
     fn finish(self) -> io::Result<()> {
-        self.out.write_all(self.buf.as_bytes())
+        self.out.write_all(&self.buf)
+    }
+}
+
+/// Longest line [`Line`] lays out: "f" and three pairs of 20-digit indices, with room for
+/// the last 8-byte copy.
+const LINE: usize = 160;
+
+/// One line of a file laid out on the stack, then appended to the file in one copy.
+struct Line {
+    bytes: [u8; LINE],
+    len: usize,
+}
+
+impl Line {
+    fn new() -> Line {
+        Line { bytes: [0; LINE], len: 0 }
+    }
+
+    fn clear(&mut self) {
+        self.len = 0;
+    }
+
+    fn byte(&mut self, b: u8) {
+        self.bytes[self.len] = b;
+        self.len += 1;
+    }
+
+    /// Appends the decimal text of `n`: an 8-byte copy from `decimals`, whose bytes
+    /// past the number's are overwritten by what follows (or left out of the line).
+    fn int(&mut self, decimals: &Decimals, n: usize) {
+        match decimals.slots.get(n) {
+            Some(&(slot, len)) => {
+                self.bytes[self.len..self.len + 8].copy_from_slice(&slot);
+                self.len += usize::from(len);
+            }
+            None => {
+                let mut buf = itoa::Buffer::new();
+                let text = buf.format(n).as_bytes();
+                self.bytes[self.len..self.len + text.len()].copy_from_slice(text);
+                self.len += text.len();
+            }
+        }
+    }
+
+    fn bytes(&self) -> &[u8] {
+        &self.bytes[..self.len]
+    }
+}
+
+/// The decimal text of the whole numbers below some bound (at most 10^8), each in an
+/// 8-byte slot with its length: the indices of a mesh's lines, laid out once.
+struct Decimals {
+    slots: Vec<([u8; 8], u8)>,
+}
+
+impl Decimals {
+    /// The numbers `0..=max` (at most `10^8 − 1`; [`Line::int`] lays out larger ones itself).
+    fn new(max: usize) -> Decimals {
+        let slots = (0..=max.min(99_999_999))
+            .map(|i| {
+                let mut buf = itoa::Buffer::new();
+                let text = buf.format(i).as_bytes();
+                let mut slot = [0u8; 8];
+                slot[..text.len()].copy_from_slice(text);
+                (slot, text.len() as u8)
+            })
+            .collect();
+        Decimals { slots }
     }
 }
 
@@ -445,14 +572,14 @@ pub const FILE_SUFFIXES: [&str; 8] = [
 
 /// Every vertex's `x y z` in Python's float repr, laid out once for the OBJ and the PLY.
 struct Coordinates {
-    text: String,
+    text: Vec<u8>,
     /// Vertex `i`'s text ends at `ends[i]` (and starts at `ends[i - 1]`).
     ends: Vec<usize>,
 }
 
 impl Coordinates {
     fn new(vertices: &[Vec3]) -> Coordinates {
-        let mut text = String::with_capacity(72 * vertices.len());
+        let mut text = Vec::with_capacity(72 * vertices.len());
         let ends = vertices
             .iter()
             .map(|v| {
@@ -463,21 +590,17 @@ impl Coordinates {
         Coordinates { text, ends }
     }
 
-    fn get(&self, i: usize) -> &str {
+    fn get(&self, i: usize) -> &[u8] {
         &self.text[if i == 0 { 0 } else { self.ends[i - 1] }..self.ends[i]]
     }
 }
 
-fn push_int(out: &mut String, i: usize) {
-    out.push_str(itoa::Buffer::new().format(i));
-}
-
 /// `x y z` in Python's float repr (shortest round trip), without a line end.
-fn push_xyz_line(out: &mut String, v: Vec3) {
+fn push_xyz_line(out: &mut Vec<u8>, v: Vec3) {
     write_python_float(out, v.x);
-    out.push(' ');
+    out.push(b' ');
     write_python_float(out, v.y);
-    out.push(' ');
+    out.push(b' ');
     write_python_float(out, v.z);
 }
 
@@ -494,4 +617,43 @@ fn yaml_key(s: &str) -> String {
 /// The labels of a segmentation file, one per vertex (each a list of comma-separated entries).
 pub fn read_segmentation(text: &str) -> Vec<Vec<String>> {
     text.lines().map(|l| l.split(',').map(str::to_string).collect()).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Indices are written as their decimal text, from the table and past its end alike,
+    /// whatever follows them on the line.
+    #[test]
+    fn lines_of_indices_read_as_the_numbers() {
+        let decimals = Decimals::new(120);
+        let mut line = Line::new();
+        for n in (0..=250).chain([999, 1_000_000, 99_999_999, 100_000_000, usize::MAX]) {
+            line.clear();
+            line.byte(b'f');
+            for k in 0..3 {
+                line.byte(b' ');
+                line.int(&decimals, n.saturating_add(k));
+                line.byte(b'/');
+                line.int(&decimals, n);
+            }
+            line.byte(b'\n');
+            let expected = format!("f {n}/{n} {}/{n} {}/{n}\n", n.saturating_add(1), n.saturating_add(2));
+            assert_eq!(std::str::from_utf8(line.bytes()).unwrap(), expected);
+        }
+    }
+
+    /// The texture's pixel bounds are the floor and ceiling of the triangle's bounds,
+    /// limited to the image, as `f64::floor` and `f64::ceil` give them.
+    #[test]
+    fn pixel_bounds_are_floor_and_ceiling() {
+        let max = 512.0;
+        for i in -2000..=2000 {
+            for x in [i as f64 * 0.37, i as f64, i as f64 + 0.5, i as f64 - 1e-12, -0.0] {
+                assert_eq!(floor_within(x, max), x.floor().clamp(0.0, max) as usize, "{x}");
+                assert_eq!(ceil_within(x, max), x.ceil().clamp(0.0, max) as usize, "{x}");
+            }
+        }
+    }
 }

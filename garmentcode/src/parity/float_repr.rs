@@ -15,6 +15,35 @@ pub fn python_float_repr(x: f64) -> String {
     out
 }
 
+/// Text that [`write_python_float`] appends to: a `String`, or the bytes of a file
+/// being laid out (every byte it appends is ASCII).
+pub(crate) trait TextOut {
+    /// Appends `s`.
+    fn push_text(&mut self, s: &str);
+    /// Appends the ASCII byte `b`.
+    fn push_byte(&mut self, b: u8);
+}
+
+impl TextOut for String {
+    fn push_text(&mut self, s: &str) {
+        self.push_str(s);
+    }
+
+    fn push_byte(&mut self, b: u8) {
+        self.push(char::from(b));
+    }
+}
+
+impl TextOut for Vec<u8> {
+    fn push_text(&mut self, s: &str) {
+        self.extend_from_slice(s.as_bytes());
+    }
+
+    fn push_byte(&mut self, b: u8) {
+        self.push(b);
+    }
+}
+
 /// [`python_float_repr`], appended to `out` without allocating.
 ///
 /// The digits come from `zmij` (a Schubfach-style shortest round-trip formatter,
@@ -22,13 +51,26 @@ pub fn python_float_repr(x: f64) -> String {
 /// the shortest digit string that reads back as `x`, the one closest to `x`. Its
 /// text is only taken apart into digits and exponent here and laid out the way
 /// Python does; the unit tests check it against the `{:e}` digits.
-pub(crate) fn write_python_float(out: &mut String, x: f64) {
+#[inline]
+pub(crate) fn write_python_float<O: TextOut>(out: &mut O, x: f64) {
+    // Most numbers (a magnitude from 1e-4 to 1e15: their shortest digits have an
+    // exponent from -4 to 14) are laid out by zmij exactly as Python does; the
+    // others are seen to below.
+    if (1e-4..1e15).contains(&x.abs()) {
+        out.push_text(zmij::Buffer::new().format_finite(x));
+    } else {
+        write_other_float(out, x);
+    }
+}
+
+/// [`write_python_float`] of the numbers outside its common range.
+fn write_other_float<O: TextOut>(out: &mut O, x: f64) {
     if x == 0.0 {
-        out.push_str("0.0");
+        out.push_text("0.0");
         return;
     }
     if !x.is_finite() {
-        out.push_str(if x.is_nan() {
+        out.push_text(if x.is_nan() {
             "nan"
         } else if x > 0.0 {
             "inf"
@@ -47,7 +89,7 @@ pub(crate) fn write_python_float(out: &mut String, x: f64) {
     // value (their shortest digits have an exponent from -4 to 14), without a search
     // of the text.
     if (1e-4..1e15).contains(&x.abs()) || (!unsigned.contains(&b'e') && !unsigned.starts_with(b"0.0000")) {
-        out.push_str(formatted);
+        out.push_text(formatted);
         return;
     }
     let (negative, text) = match text.split_first() {
@@ -95,41 +137,41 @@ pub(crate) fn write_python_float(out: &mut String, x: f64) {
     let exp = int_len - leading_zeros - 1 + exp_shift;
     let digits = &digits[..n];
     if negative {
-        out.push('-');
+        out.push_byte(b'-');
     }
-    let push = |out: &mut String, d: &[u8]| d.iter().for_each(|&c| out.push(c as char));
+    let push = |out: &mut O, d: &[u8]| d.iter().for_each(|&c| out.push_byte(c));
     if !(-4..16).contains(&exp) {
         push(out, &digits[..1]);
         if n > 1 {
-            out.push('.');
+            out.push_byte(b'.');
             push(out, &digits[1..]);
         }
-        out.push('e');
-        out.push(if exp < 0 { '-' } else { '+' });
+        out.push_byte(b'e');
+        out.push_byte(if exp < 0 { b'-' } else { b'+' });
         let e = exp.unsigned_abs();
         if e >= 100 {
-            out.push(char::from(b'0' + (e / 100) as u8));
+            out.push_byte(b'0' + (e / 100) as u8);
         }
-        out.push(char::from(b'0' + (e / 10 % 10) as u8));
-        out.push(char::from(b'0' + (e % 10) as u8));
+        out.push_byte(b'0' + (e / 10 % 10) as u8);
+        out.push_byte(b'0' + (e % 10) as u8);
         return;
     }
     let point = exp + 1; // digits before the decimal point
     if point <= 0 {
-        out.push_str("0.");
+        out.push_text("0.");
         for _ in 0..-point {
-            out.push('0');
+            out.push_byte(b'0');
         }
         push(out, digits);
     } else if point as usize >= n {
         push(out, digits);
         for _ in n..point as usize {
-            out.push('0');
+            out.push_byte(b'0');
         }
-        out.push_str(".0");
+        out.push_text(".0");
     } else {
         push(out, &digits[..point as usize]);
-        out.push('.');
+        out.push_byte(b'.');
         push(out, &digits[point as usize..]);
     }
 }
