@@ -187,6 +187,11 @@ impl Bvh {
         !(b_hi.cmplt(lo).any() || b_lo.cmpgt(hi).any())
     }
 
+    /// The box of triangle `i` (lower, upper corner) as of the last refit.
+    pub fn face_box(&self, i: usize) -> (Vec3, Vec3) {
+        self.boxes[i]
+    }
+
     /// Each triangle's place in the tree's order (the order of [`Bvh::for_each_in_box`]).
     pub fn ranks(&self) -> Vec<u32> {
         let mut rank = vec![0; self.order.len()];

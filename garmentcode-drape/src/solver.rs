@@ -761,7 +761,7 @@ fn bend_correction(cloth: &Cloth, bend: Compliance, dt: f64, (x, v): (&[Vec3], &
     let e_len = e.length();
     let e_hat = e.normalize_or_zero();
     let flip = -sign(n1.cross(n2).dot(e));
-    let angle = n1.dot(n2).clamp(-1.0, 1.0).acos();
+    let angle = acos(n1.dot(n2));
     let g1 = n1 * e_len * flip;
     let g2 = n2 * e_len * flip;
     let g3 = (n1 * (x1 - x4).dot(e_hat) + n2 * (x2 - x4).dot(e_hat)) * flip;
@@ -776,7 +776,47 @@ fn bend_correction(cloth: &Cloth, bend: Compliance, dt: f64, (x, v): (&[Vec3], &
     Some([g1 * (w[0] * dl), g2 * (w[1] * dl), g3 * (w[2] * dl), g4 * (w[3] * dl)])
 }
 
+/// `acos(c)` for `c` clamped to [−1, 1], within 3e-8 rad: the polynomial of Abramowitz and
+/// Stegun (4.4.46), `acos(c) = sqrt(1 − c)·P(c)` on [0, 1] and `π − acos(−c)` below. A
+/// fraction of the cost of the library's `acos`, and far more precise than the bending needs:
+/// with the default fabric a bend moves a particle by a few millionths of its angle (cm per
+/// substep).
+fn acos(c: f64) -> f64 {
+    const P: [f64; 8] = [
+        1.570_796_305_0,
+        -0.214_598_801_6,
+        0.088_978_987_4,
+        -0.050_174_304_6,
+        0.030_891_881_0,
+        -0.017_088_125_6,
+        0.006_670_090_1,
+        -0.001_262_491_1,
+    ];
+    let a = c.abs().min(1.0);
+    let p = P.iter().rev().fold(0.0, |acc, &k| acc * a + k);
+    let t = (1.0 - a).sqrt() * p;
+    if c < 0.0 { std::f64::consts::PI - t } else { t }
+}
+
 /// Warp's `sign`: −1 for negative, else 1.
 fn sign(x: f64) -> f64 {
     if x < 0.0 { -1.0 } else { 1.0 }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn acos_is_within_3e_8_of_the_library() {
+        for k in -20_000..=20_000 {
+            let c = k as f64 / 20_000.0;
+            assert!((acos(c) - c.acos()).abs() < 3e-8, "acos({c}) = {} against {}", acos(c), c.acos());
+        }
+        for c in [1.0 - 1e-12, -1.0 + 1e-12, 1e-300, -1e-300] {
+            assert!((acos(c) - c.acos()).abs() < 3e-8, "acos({c})");
+        }
+        assert_eq!(acos(1.5), acos(1.0));
+        assert_eq!(acos(1.0), 0.0);
+    }
 }
