@@ -100,16 +100,18 @@ fn the_pleated_skirts_flat_parts_are_sewn_to_the_band_and_bodice_beside_them() {
         let p = build("pleated-skirt", body);
         assert_eq!(crossed_stitches(&p), Vec::<String>::new(), "{body}");
     }
-    // On a bodice, without a band; and with knife pleats in front too.
+    // On a fitted band, and on a bodice without a band; with knife pleats in front too.
+    use garments::design::{UpperKind, WaistbandKind};
     let mut design = builtin::design("pleated-skirt").unwrap();
-    design.meta.wb = None;
-    design.meta.upper = Some(garments::design::UpperKind::FittedShirt);
-    for style in [PleatStyle::BoxAndKnife, PleatStyle::KnifePleats, PleatStyle::BoxPleats] {
-        design.extension.pleats.style = Some(style);
-        let body = builtin::body("mean_all").unwrap();
-        let p = garments::build::build(&design, &body, "pleated-dress").unwrap().pattern;
-        assert!(p.panel("skirt_front").is_some_and(|s| !s.lines.is_empty()));
-        assert_eq!(crossed_stitches(&p), Vec::<String>::new(), "{style:?}");
+    for (upper, wb) in [(None, Some(WaistbandKind::FittedWB)), (Some(UpperKind::FittedShirt), None)] {
+        (design.meta.upper, design.meta.wb) = (upper, wb);
+        for style in [PleatStyle::BoxAndKnife, PleatStyle::KnifePleats, PleatStyle::BoxPleats] {
+            design.extension.pleats.style = Some(style);
+            let body = builtin::body("mean_all").unwrap();
+            let p = garments::build::build(&design, &body, "pleated").unwrap().pattern;
+            assert!(p.panel("skirt_front").is_some_and(|s| !s.lines.is_empty()));
+            assert_eq!(crossed_stitches(&p), Vec::<String>::new(), "{upper:?} {wb:?} {style:?}");
+        }
     }
 }
 
