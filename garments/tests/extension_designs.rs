@@ -116,6 +116,19 @@ fn the_pleated_skirts_flat_parts_are_sewn_to_the_band_and_bodice_beside_them() {
 }
 
 #[test]
+fn a_pocket_is_not_placed_across_a_dart() {
+    // Sampled (`sample -n 6 -s 7 --extended`, sample 2): the chest pocket's corners lay
+    // inside the fitted front panel but its sides crossed the side and waist darts, and
+    // the pattern could not be meshed (`line_outside_panel`).
+    let text = include_str!("data/pocket-across-darts.yaml");
+    let design: Design = garmentcode::io::read_design(text, "pocket-across-darts.yaml", &extended_design_space()).unwrap();
+    let built = garments::build::build(&design, &builtin::body("mean_all").unwrap(), "sampled").unwrap();
+    let problems = garmentcode::validate(&built.pattern);
+    assert!(problems.iter().all(|p| p.severity != Severity::Error), "{problems:?}");
+    assert!(built.pattern.panel("right_ftorso_pocket").is_some());
+}
+
+#[test]
 fn the_pocket_shirt_has_a_pocket_and_folded_cuffs() {
     for (body, _) in builtin::BODIES {
         let p = build("pocket-shirt", body);

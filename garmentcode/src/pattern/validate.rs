@@ -4,6 +4,8 @@
 
 mod inner;
 
+pub(crate) use inner::crosses_loop;
+
 use super::{EdgePlace, LineKind, Pattern};
 use crate::intersect;
 use std::collections::HashMap;
