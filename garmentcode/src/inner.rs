@@ -94,7 +94,11 @@ impl PanelId {
             return Err(self.inner_error(a, name, "its edges do not form a closed loop"));
         }
         self.check_own_vertices(a, name, &edges)?;
-        self.check_inside(a, name, &edges.linearized_positions(a))?;
+        let mut around = edges.linearized_positions(a);
+        if let Some(&first) = around.first() {
+            around.push(first);
+        }
+        self.check_inside(a, name, &around)?;
         let d = a.pd_mut(self);
         d.holes.push(InnerPath { name: name.to_string(), kind, edges });
         Ok(d.holes.len() - 1)
@@ -142,12 +146,20 @@ impl PanelId {
         Ok(())
     }
 
-    /// Every point strictly inside the outline (linearised), else an error naming
-    /// the panel, the hole or line and the point.
+    /// Every point strictly inside the outline (linearised), and no segment between
+    /// consecutive points crossing it (a dart's point between two corners of a
+    /// pocket), else an error naming the panel, the hole or line and the point.
     fn check_inside(self, a: &Arena, name: &str, points: &[Vec2]) -> Result<()> {
         let outline = self.edges(a).linearized_positions(a);
-        match points.iter().find(|p| !inside(&outline, **p)) {
-            Some(p) => Err(self.inner_error(a, name, &format!("the point ({:.2}, {:.2}) is not inside the panel's outline", p.x, p.y))),
+        if let Some(p) = points.iter().find(|p| !inside(&outline, **p)) {
+            return Err(self.inner_error(a, name, &format!("the point ({:.2}, {:.2}) is not inside the panel's outline", p.x, p.y)));
+        }
+        match points.windows(2).find(|w| crate::pattern::validate::crosses_loop(w[0], w[1], &outline)) {
+            Some(w) => Err(self.inner_error(
+                a,
+                name,
+                &format!("from ({:.2}, {:.2}) to ({:.2}, {:.2}) it crosses the panel's outline", w[0].x, w[0].y, w[1].x, w[1].y),
+            )),
             None => Ok(()),
         }
     }

@@ -5,6 +5,7 @@
 //! `front`, a pocket's placement line on `front` with `pocket` stitched onto it, a
 //! facing layer, a sleeve with a fold line and a skirt with a pleat's lines.
 
+use garmentcode::mesh::FOLD_GAP;
 use garmentcode::{EXTENSION_VERSION, EdgePlace, HoleKind, Layer, LineKind, Pattern};
 use std::path::Path;
 
@@ -659,9 +660,12 @@ fn mesh_turns_the_part_right_of_a_fold() {
         assert!((a - garmentcode::Vec3::new(q.x, q.y, 0.0)).length() < 1e-9, "flat at 0°");
         if q.y < 15.0 {
             turned += 1;
-            // 180°: mirrored over the line onto the left part; 90°: straight down from it.
-            assert!((b - garmentcode::Vec3::new(q.x, 30.0 - q.y, 0.0)).length() < 1e-9, "{b:?} for {q:?}");
-            assert!((c - garmentcode::Vec3::new(q.x, 15.0, q.y - 15.0)).length() < 1e-9, "{c:?} for {q:?}");
+            // 180°: mirrored over the line onto the left part, FOLD_GAP behind it (less
+            // within FOLD_GAP of the line); 90°: straight down from it, half as far off
+            // its side.
+            let gap = FOLD_GAP * ((15.0 - q.y) / FOLD_GAP).min(1.0);
+            assert!((b - garmentcode::Vec3::new(q.x, 30.0 - q.y, -gap)).length() < 1e-9, "{b:?} for {q:?}");
+            assert!((c - garmentcode::Vec3::new(q.x, 15.0 - gap / 2.0, q.y - 15.0)).length() < 1e-9, "{c:?} for {q:?}");
         } else {
             assert!((b - a).length() < 1e-9 && (c - a).length() < 1e-9, "the left part stays");
         }

@@ -577,6 +577,12 @@ impl Skirt2 {
             opts.pleats.map(|p| p[0]),
         )?;
         front.panel.translate_to(a, v3(0.0, waist_level, 25.0));
+        // Placed in front, the panel is turned round (its edges reversed, see
+        // `autonorm`); its waist's edges, made before, still list from the right as at
+        // the back. Pleats split the waist into flat parts: list them the other way so
+        // that the band pairs each with the part it lies against, not its mirror
+        // image (one edge, unpleated: no change).
+        front.top.reverse(a, false);
         let back = SkirtPanel::new(
             a,
             &name("skirt_back"),

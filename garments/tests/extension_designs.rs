@@ -5,7 +5,7 @@
 
 use garmentcode::mesh::BoxMesh;
 use garmentcode::{EdgePlace, HoleKind, LineKind, PanelSpec, Params, Pattern, Sampler, Severity, sample_rng};
-use garments::design::{BottomKind, Extension, extended_design_space};
+use garments::design::{BottomKind, Extension, PleatStyle, extended_design_space};
 use garments::{Design, builtin};
 
 fn build(name: &str, body: &str) -> Pattern {
@@ -68,6 +68,68 @@ fn the_pleated_skirt_stitches_its_folded_width_to_the_band() {
         }
         assert!(p.inner_stitches.is_empty());
     }
+}
+
+/// Stitches between two panels that pair points on opposite sides of the body
+/// (more than 1 cm either side of its middle, x = 0): the ends of each stitch's
+/// edges, paired as the box mesh pairs them (the first side's edge reversed, unless
+/// the stitch is `right_wrong`), as `panel x ↔ panel x`.
+fn crossed_stitches(p: &Pattern) -> Vec<String> {
+    let mut crossed = Vec::new();
+    for st in p.stitches.iter().filter(|st| st.sides[0].panel != st.sides[1].panel) {
+        let ends = |k: usize| {
+            let panel = p.panel(&st.sides[k].panel).unwrap();
+            let e = panel.edge_geom(st.sides[k].edge);
+            [panel.point_to_3d(e.start).x, panel.point_to_3d(e.end).x]
+        };
+        let (mut first, second) = (ends(0), ends(1));
+        if !st.right_wrong {
+            first.reverse();
+        }
+        for (x0, x1) in first.into_iter().zip(second) {
+            if x0.abs() > 1.0 && x1.abs() > 1.0 && x0.signum() != x1.signum() {
+                crossed.push(format!("{} {x0:.1} ↔ {} {x1:.1}", st.sides[0].panel, st.sides[1].panel));
+            }
+        }
+    }
+    crossed
+}
+
+#[test]
+fn the_pleated_skirts_flat_parts_are_sewn_to_the_band_and_bodice_beside_them() {
+    // The front panel is turned round when placed in front: before, its flat parts
+    // were paired with the band's in mirror order (the band's left end with the
+    // skirt's right part) and the drape knotted at the centre front.
+    for (body, _) in builtin::BODIES {
+        let p = build("pleated-skirt", body);
+        assert_eq!(crossed_stitches(&p), Vec::<String>::new(), "{body}");
+    }
+    // On a fitted band, and on a bodice without a band; with knife pleats in front too.
+    use garments::design::{UpperKind, WaistbandKind};
+    let mut design = builtin::design("pleated-skirt").unwrap();
+    for (upper, wb) in [(None, Some(WaistbandKind::FittedWB)), (Some(UpperKind::FittedShirt), None)] {
+        (design.meta.upper, design.meta.wb) = (upper, wb);
+        for style in [PleatStyle::BoxAndKnife, PleatStyle::KnifePleats, PleatStyle::BoxPleats] {
+            design.extension.pleats.style = Some(style);
+            let body = builtin::body("mean_all").unwrap();
+            let p = garments::build::build(&design, &body, "pleated").unwrap().pattern;
+            assert!(p.panel("skirt_front").is_some_and(|s| !s.lines.is_empty()));
+            assert_eq!(crossed_stitches(&p), Vec::<String>::new(), "{upper:?} {wb:?} {style:?}");
+        }
+    }
+}
+
+#[test]
+fn a_pocket_is_not_placed_across_a_dart() {
+    // Sampled (`sample -n 6 -s 7 --extended`, sample 2): the chest pocket's corners lay
+    // inside the fitted front panel but its sides crossed the side and waist darts, and
+    // the pattern could not be meshed (`line_outside_panel`).
+    let text = include_str!("data/pocket-across-darts.yaml");
+    let design: Design = garmentcode::io::read_design(text, "pocket-across-darts.yaml", &extended_design_space()).unwrap();
+    let built = garments::build::build(&design, &builtin::body("mean_all").unwrap(), "sampled").unwrap();
+    let problems = garmentcode::validate(&built.pattern);
+    assert!(problems.iter().all(|p| p.severity != Severity::Error), "{problems:?}");
+    assert!(built.pattern.panel("right_ftorso_pocket").is_some());
 }
 
 #[test]

@@ -223,11 +223,18 @@ pub struct PanelMesh {
     pub folds: Vec<Fold>,
 }
 
+/// How far (cm) the part of a panel folded flat stands off the other part in the box
+/// mesh (see [`Fold`]): twice the simulator's particle radius and more.
+pub const FOLD_GAP: f64 = 0.5;
+
 /// A fold line of a panel, as the box mesh places it: the part of the panel to the
 /// right of the line (through its first and last vertex, looking along it) turns
 /// about it by `angle`, right-handed about its direction (towards the panel's `−z`,
-/// away from its front, for angles under 180°; at 180° it lies folded flat over the
-/// left part).
+/// away from its front, for angles under 180°; at 180° it lies folded flat behind the
+/// left part). The turned part stands [`FOLD_GAP`] off along its own normal, scaled by
+/// `(1 − cos angle) / 2` (all of it when folded flat, none when flat) and ramping in
+/// over the first `FOLD_GAP` from the line: two layers folded flat would otherwise lie
+/// exactly on each other, and a simulator could not tell which is in front.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fold {
     /// A point of the line (panel-local, cm).
@@ -256,15 +263,16 @@ impl Fold {
 
     /// `q` (the panel-local 3D image of the 2D point `p`) turned if `p` lies right of the line.
     fn turn(&self, p: Vec2, q: Vec3) -> Vec3 {
-        if self.direction.perp_dot(p - self.at) >= 0.0 {
+        let beyond = -self.direction.perp_dot(p - self.at);
+        if beyond <= 0.0 {
             return q;
         }
         let axis = Vec3::new(self.direction.x, self.direction.y, 0.0);
-        let r = q - Vec3::new(self.at.x, self.at.y, 0.0);
         // Rodrigues' rotation about the line.
         let (s, c) = self.angle.sin_cos();
-        let turned = r * c + axis.cross(r) * s + axis * axis.dot(r) * (1.0 - c);
-        turned + Vec3::new(self.at.x, self.at.y, 0.0)
+        let rotate = |r: Vec3| r * c + axis.cross(r) * s + axis * axis.dot(r) * (1.0 - c);
+        let gap = FOLD_GAP * (1.0 - c) / 2.0 * (beyond / FOLD_GAP).min(1.0);
+        rotate(q - Vec3::new(self.at.x, self.at.y, 0.0)) + rotate(Vec3::Z) * gap + Vec3::new(self.at.x, self.at.y, 0.0)
     }
 }
 

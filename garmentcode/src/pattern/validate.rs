@@ -4,6 +4,8 @@
 
 mod inner;
 
+pub(crate) use inner::crosses_loop;
+
 use super::{Curvature, EdgePlace, EdgeSpec, LineKind, Pattern};
 use crate::intersect;
 use crate::math::Vec2;

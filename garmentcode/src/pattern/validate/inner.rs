@@ -178,7 +178,7 @@ fn self_crossing(p: &[Vec2]) -> bool {
 
 /// Whether segment `a0 a1` of a line crosses the outline away from its own ends
 /// (an end on the outline is allowed: a fold line's, a pleat line's from the waist).
-fn crosses_loop(a0: Vec2, a1: Vec2, outline: &[Vec2]) -> bool {
+pub(crate) fn crosses_loop(a0: Vec2, a1: Vec2, outline: &[Vec2]) -> bool {
     let len = (a1 - a0).length();
     if len == 0.0 {
         return false;
