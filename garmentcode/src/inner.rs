@@ -154,7 +154,7 @@ impl PanelId {
         if let Some(p) = points.iter().find(|p| !inside(&outline, **p)) {
             return Err(self.inner_error(a, name, &format!("the point ({:.2}, {:.2}) is not inside the panel's outline", p.x, p.y)));
         }
-        match points.windows(2).find(|w| crate::pattern::validate::crosses_loop(w[0], w[1], &outline)) {
+        match points.windows(2).find(|w| crate::pattern::validate::inner::crosses_loop(w[0], w[1], &outline)) {
             Some(w) => Err(self.inner_error(
                 a,
                 name,

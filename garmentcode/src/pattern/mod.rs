@@ -332,6 +332,22 @@ pub(crate) fn edge_geometry(vertices: &[[f64; 2]], e: &EdgeSpec) -> Edge {
     Edge { start: s, end: t, curve }
 }
 
+/// Why the circular arc `e` cannot be drawn, if its radius is under half the distance
+/// between its ends (beyond the tolerance [`crate::arc::cy_from_radius`] rounds to a
+/// half circle): the message says the radius it needs at least.
+pub(crate) fn arc_radius_too_small(vertices: &[[f64; 2]], e: &EdgeSpec) -> Option<String> {
+    let Some(Curvature::Circle { radius, .. }) = e.curvature else { return None };
+    let (s, t) = (Vec2::from(vertices[e.endpoints[0]]), Vec2::from(vertices[e.endpoints[1]]));
+    let half = (t - s).length() / 2.0;
+    (radius * radius < half * half - 1e-3).then(|| {
+        format!(
+            "arc radius {} cm is under half the distance between its ends: no circle of that radius joins them (at least {} cm)",
+            crate::message::short(radius),
+            crate::message::short(half)
+        )
+    })
+}
+
 // The format extension's types (see `extension.rs` for what they mean and their methods).
 
 /// A closed loop of edges inside a panel's outline.

@@ -2,14 +2,10 @@
 //! about things a pattern maker should look at (crossing outlines, seams whose two
 //! sides differ in length).
 
-mod inner;
+pub(crate) mod inner;
 
-pub(crate) use inner::crosses_loop;
-
-use super::{Curvature, EdgePlace, EdgeSpec, LineKind, Pattern};
+use super::{EdgePlace, LineKind, Pattern, arc_radius_too_small};
 use crate::intersect;
-use crate::math::Vec2;
-use crate::message::short;
 use std::collections::HashMap;
 use std::fmt;
 
@@ -95,22 +91,6 @@ impl ProblemKind {
             ProblemKind::ArcRadiusTooSmall => "arc_radius_too_small",
         }
     }
-}
-
-/// Why the circular arc `e` cannot be drawn, if its radius is under half the distance
-/// between its ends (beyond the tolerance [`crate::arc::cy_from_radius`] rounds to a
-/// half circle): the message says the radius it needs at least.
-pub(crate) fn arc_radius_too_small(vertices: &[[f64; 2]], e: &EdgeSpec) -> Option<String> {
-    let Some(Curvature::Circle { radius, .. }) = e.curvature else { return None };
-    let (s, t) = (Vec2::from(vertices[e.endpoints[0]]), Vec2::from(vertices[e.endpoints[1]]));
-    let half = (t - s).length() / 2.0;
-    (radius * radius < half * half - 1e-3).then(|| {
-        format!(
-            "arc radius {} cm is under half the distance between its ends: no circle of that radius joins them (at least {} cm)",
-            short(radius),
-            short(half)
-        )
-    })
 }
 
 /// One problem found in a pattern.

@@ -5,7 +5,7 @@
 use super::ProblemKind;
 use crate::math::Vec2;
 use crate::pattern::extension::sample;
-use crate::pattern::{EdgeSpec, LineKind, PanelSpec, edge_geometry};
+use crate::pattern::{EdgeSpec, LineKind, PanelSpec, arc_radius_too_small, edge_geometry};
 
 /// Points per curved edge of the polygons the checks compare.
 const STEPS: usize = 32;
@@ -114,7 +114,7 @@ fn well_formed(what: &str, vertices: &[[f64; 2]], edges: &[EdgeSpec], closed: bo
             report(ProblemKind::DegenerateEdge, format!("{what} edge {i}: start and end coincide"));
             return false;
         }
-        if let Some(message) = super::arc_radius_too_small(vertices, e) {
+        if let Some(message) = arc_radius_too_small(vertices, e) {
             report(ProblemKind::ArcRadiusTooSmall, format!("{what} edge {i}: {message}"));
             return false;
         }
