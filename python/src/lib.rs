@@ -779,12 +779,12 @@ impl PyPattern {
     /// `holes` and `lines` (lists, empty when the panel has none) and `layer`
     /// (`"outer"`, `"facing"` or `"lining"`). Raises `KeyError` for an unknown name.
     fn panel<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
-        if self.pattern.panel(name).is_none() {
+        let Some(panel) = self.pattern.panel(name) else {
             let known: Vec<&str> = self.pattern.panels.iter().map(|p| p.name.as_str()).collect();
             return Err(PyKeyError::new_err(format!("no panel '{name}' (panels: {})", known.join(", "))));
-        }
-        let spec: serde_json::Value = serde_json::from_str(&self.to_json()?).map_err(|e| PatternError::new_err(e.to_string()))?;
-        let mut v = spec["pattern"]["panels"][name].clone();
+        };
+        let text = panel.to_json().map_err(|e| PatternError::new_err(e.to_string()))?;
+        let mut v: serde_json::Value = serde_json::from_str(&text).map_err(|e| PatternError::new_err(e.to_string()))?;
         if let Some(m) = v.as_object_mut() {
             m.entry("holes").or_insert_with(|| serde_json::json!([]));
             m.entry("lines").or_insert_with(|| serde_json::json!([]));

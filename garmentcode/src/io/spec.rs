@@ -280,6 +280,28 @@ impl Pattern {
     }
 }
 
+impl PanelSpec {
+    /// The panel as the specification file writes it under `pattern.panels.NAME`
+    /// (the same keys and numbers as [`Pattern::to_json`], without the name).
+    ///
+    /// ```
+    /// let text = r#"{"pattern": {"panels": {"square": {"translation": [0, 0, 0], "rotation": [0, 0, 0],
+    ///   "vertices": [[0, 0], [10, 0], [10, 10], [0, 10]],
+    ///   "edges": [{"endpoints": [0, 1]}, {"endpoints": [1, 2]}, {"endpoints": [2, 3]}, {"endpoints": [3, 0]}]}},
+    ///   "stitches": []},
+    ///   "properties": {"curvature_coords": "relative", "normalize_panel_translation": false,
+    ///   "normalized_edge_loops": true, "units_in_meter": 100}}"#;
+    /// let pattern = garmentcode::Pattern::from_json(text).unwrap();
+    /// let panel: serde_json::Value = serde_json::from_str(&pattern.panel("square").unwrap().to_json().unwrap()).unwrap();
+    /// assert_eq!(panel["vertices"][2], serde_json::json!([10.0, 10.0]));
+    /// ```
+    pub fn to_json(&self) -> Result<String> {
+        let mut w = Writer { out: String::with_capacity(4096), depth: 0 };
+        write_panel(&mut w, self)?;
+        Ok(w.out)
+    }
+}
+
 fn write_panel(w: &mut Writer, p: &PanelSpec) -> Result<()> {
     w.open('{');
     w.field("translation");
