@@ -244,7 +244,7 @@ impl<'a> MeshFiles<'a> {
                 line.int(decimals, f.uvs[k] + 1);
             }
             line.byte(b'\n');
-            text.buf.extend_from_slice(line.bytes());
+            text.push_line(&line);
             text.line_end()?;
         }
         Ok(())
@@ -254,29 +254,12 @@ impl<'a> MeshFiles<'a> {
         const FABRIC: [u8; 3] = [0xd8, 0xc8, 0xb0];
         let uvs = self.uvs();
         let n = TEXTURE_SIZE;
-        let mut rgb = vec![0xffu8; 3 * n * n];
+        let mut rgb = blank_image(n);
         let scale = n as f64;
         for f in &self.mesh.faces {
             // Image rows run down, texture v up.
-            let [a, b, c] = f.uvs.map(|t| Vec2::new(uvs[t].x * scale, (1.0 - uvs[t].y) * scale));
-            let area = (b - a).perp_dot(c - a);
-            if area == 0.0 || !area.is_finite() {
-                continue;
-            }
-            // The pixels whose centres the triangle's bounding box holds, within the image.
-            let (lo, hi) = (a.min(b).min(c), a.max(b).max(c));
-            let (x0, x1) = (floor_within(lo.x, scale), ceil_within(hi.x, scale));
-            let (y0, y1) = (floor_within(lo.y, scale), ceil_within(hi.y, scale));
-            for y in y0..y1 {
-                for x in x0..x1 {
-                    // Pixels whose centre is inside (or on) the triangle.
-                    let p = Vec2::new(x as f64 + 0.5, y as f64 + 0.5);
-                    let w = [(b - a).perp_dot(p - a), (c - b).perp_dot(p - b), (a - c).perp_dot(p - c)];
-                    if w.iter().all(|w| w * area >= 0.0) {
-                        rgb[3 * (y * n + x)..3 * (y * n + x) + 3].copy_from_slice(&FABRIC);
-                    }
-                }
-            }
+            let corners = f.uvs.map(|t| Vec2::new(uvs[t].x * scale, (1.0 - uvs[t].y) * scale));
+            fill_triangle(&mut rgb, n, corners, FABRIC);
         }
         let mut out = Vec::new();
         let mut enc = png::Encoder::new(&mut out, n as u32, n as u32);
@@ -285,7 +268,7 @@ impl<'a> MeshFiles<'a> {
         enc.set_compression(png::Compression::Fast);
         // Writing into memory cannot fail for an image of the size declared.
         let mut writer = enc.write_header().expect("PNG header in memory");
-        writer.write_image_data(&rgb).expect("PNG data in memory");
+        writer.write_image_data(&rgb[..3 * n * n]).expect("PNG data in memory");
         writer.finish().expect("PNG end in memory");
         out
     }
@@ -309,7 +292,7 @@ impl<'a> MeshFiles<'a> {
                         text.buf.extend_from_slice(if i == 0 { b"stitch_" } else { b",stitch_" });
                         line.clear();
                         line.int(decimals, *k);
-                        text.buf.extend_from_slice(line.bytes());
+                        text.push_line(&line);
                     }
                 }
                 VertexLabel::Panel(p) => text.buf.extend_from_slice(m.panels[*p].name.as_bytes()),
@@ -363,7 +346,7 @@ impl<'a> MeshFiles<'a> {
                 line.byte(b' ');
                 line.int(decimals, *id);
                 line.byte(b'\n');
-                text.buf.extend_from_slice(line.bytes());
+                text.push_line(&line);
                 text.line_end()?;
             }
         }
@@ -387,7 +370,7 @@ impl<'a> MeshFiles<'a> {
                 line.int(decimals, v + 1);
             }
             line.byte(b'\n');
-            text.buf.extend_from_slice(line.bytes());
+            text.push_line(&line);
             text.line_end()?;
         }
         Ok(())
@@ -434,7 +417,7 @@ impl<'a> MeshFiles<'a> {
                 }
             }
             line.byte(b'\n');
-            text.buf.extend_from_slice(line.bytes());
+            text.push_line(&line);
             text.line_end()?;
         }
         for f in &m.faces {
@@ -445,10 +428,89 @@ impl<'a> MeshFiles<'a> {
                 line.int(decimals, v);
             }
             line.byte(b'\n');
-            text.buf.extend_from_slice(line.bytes());
+            text.push_line(&line);
             text.line_end()?;
         }
         Ok(())
+    }
+}
+
+/// Pixels of a row [`fill_triangle`] tests together.
+const GROUP: usize = 4;
+
+/// A white `n`×`n` RGB image for [`fill_triangle`], with the room it needs past the end
+/// (the image is `image[..3 * n * n]`).
+fn blank_image(n: usize) -> Vec<u8> {
+    vec![0xff; 3 * (n * n + GROUP)]
+}
+
+/// Paints `colour` over the pixels of the `n`×`n` RGB image `rgb` (white or `colour`,
+/// from [`blank_image`]) whose centres lie inside or on the triangle `[a, b, c]` (pixel
+/// units): where each edge function `(end − start).perp_dot(p − start)` has the sign of
+/// the triangle's doubled area, or is 0. A degenerate triangle paints nothing.
+///
+/// The mesh's triangles are a few pixels wide, so a row of the triangle's bounding box is
+/// tested [`GROUP`] pixels at a time without a branch ([`paint_group`]): pixels past the
+/// box (past the image's end, its padding) are left as they are, inside ones are painted
+/// by `&` (white is all ones). Each edge function's term in the row's height is computed
+/// once per row, by the same operations as `perp_dot` (so the same bits).
+fn fill_triangle(rgb: &mut [u8], n: usize, [a, b, c]: [Vec2; 3], colour: [u8; 3]) {
+    let area = (b - a).perp_dot(c - a);
+    if area == 0.0 || !area.is_finite() {
+        return;
+    }
+    let scale = n as f64;
+    // The pixels whose centres the triangle's bounding box holds, within the image.
+    let (lo, hi) = (a.min(b).min(c), a.max(b).max(c));
+    let (x0, x1) = (floor_within(lo.x, scale), ceil_within(hi.x, scale));
+    let (y0, y1) = (floor_within(lo.y, scale), ceil_within(hi.y, scale));
+    let starts = [a, b, c];
+    let edges = [b - a, c - b, a - c];
+    for y in y0..y1 {
+        let py = y as f64 + 0.5;
+        let row = Row { terms: [0, 1, 2].map(|k| edges[k].x * (py - starts[k].y)), edges, starts, area, end: x1 };
+        let mut x = x0;
+        while x < x1 {
+            let at = 3 * (y * n + x);
+            let pixels = (&mut rgb[at..at + 3 * GROUP]).try_into().expect("a group of pixels");
+            // Pixel indices are below `n`, a few hundred: exact as `u32`, whose conversion
+            // to `f64` is one instruction (that of `usize` is a dozen).
+            paint_group(pixels, x as u32, &row, colour);
+            x += GROUP;
+        }
+    }
+}
+
+/// One row of a triangle for [`paint_group`].
+struct Row {
+    /// Each edge function's term in the row's height, `edge.x · (py − start.y)`.
+    terms: [f64; 3],
+    edges: [Vec2; 3],
+    starts: [Vec2; 3],
+    /// The triangle's doubled area.
+    area: f64,
+    /// The first pixel past the triangle's bounding box.
+    end: usize,
+}
+
+/// Paints the pixels `x..x + GROUP` of a row of [`fill_triangle`] (`pixels`, RGB) whose
+/// centres pass the row's three edge tests, without a branch. Not inlined: inlined, the
+/// compiler vectorises the loop over groups, which for the usual one group a row costs more
+/// than it saves.
+#[inline(never)]
+fn paint_group(pixels: &mut [u8; 3 * GROUP], x: u32, row: &Row, colour: [u8; 3]) {
+    let first = f64::from(x) + 0.5;
+    // 0xff for a pixel to paint, 0 for one to leave.
+    let paint: [u8; GROUP] = std::array::from_fn(|lane| {
+        // Exact: a whole number and a half below 2^32.
+        let px = first + lane as f64;
+        let inside = (0..3).fold(x as usize + lane < row.end, |inside, k| {
+            inside & ((row.terms[k] - row.edges[k].y * (px - row.starts[k].x)) * row.area >= 0.0)
+        });
+        0u8.wrapping_sub(u8::from(inside))
+    });
+    for (i, channel) in pixels.iter_mut().enumerate() {
+        *channel &= !paint[i / 3] | colour[i % 3];
     }
 }
 
@@ -484,6 +546,19 @@ impl Chunked<'_> {
         Ok(())
     }
 
+    /// Appends a line laid out on the stack. A short line (every line but one of huge
+    /// indices) goes in by a copy of fixed length, which the compiler lays out inline
+    /// instead of calling `memcpy` for each line; the bytes past the line's end are cut off.
+    fn push_line(&mut self, line: &Line) {
+        if line.len <= SHORT_LINE {
+            let at = self.buf.len();
+            self.buf.extend_from_slice(&line.bytes[..SHORT_LINE]);
+            self.buf.truncate(at + line.len);
+        } else {
+            self.buf.extend_from_slice(line.bytes());
+        }
+    }
+
     /// Hands the rest on.
     fn finish(self) -> io::Result<()> {
         self.out.write_all(&self.buf)
@@ -493,6 +568,10 @@ impl Chunked<'_> {
 /// Longest line [`Line`] lays out: "f" and three pairs of 20-digit indices, with room for
 /// the last 8-byte copy.
 const LINE: usize = 160;
+
+/// Length of the fixed copy of [`Chunked::push_line`]: a face line of the box OBJ with
+/// indices below 10^8 (the decimals' table) and room to spare.
+const SHORT_LINE: usize = 64;
 
 /// One line of a file laid out on the stack, then appended to the file in one copy.
 struct Line {
@@ -641,6 +720,52 @@ mod tests {
             line.byte(b'\n');
             let expected = format!("f {n}/{n} {}/{n} {}/{n}\n", n.saturating_add(1), n.saturating_add(2));
             assert_eq!(std::str::from_utf8(line.bytes()).unwrap(), expected);
+        }
+    }
+
+    /// `fill_triangle` paints exactly the pixels whose centres pass the three edge tests
+    /// written out in full (`perp_dot` of the whole vectors, per pixel), for triangles of
+    /// both windings, with corners on pixel centres and corners (edges through centres),
+    /// thin and degenerate ones, and ones reaching past the image.
+    #[test]
+    fn triangles_paint_the_pixels_whose_centres_they_hold() {
+        const N: usize = 24;
+        const COLOUR: [u8; 3] = [0xd8, 0xc8, 0xb0];
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for i in 0..3000 {
+            let mut coordinate = || match next() % 4 {
+                // On a pixel centre or corner, so that edges run through centres.
+                0 => (next() % 52) as f64 * 0.5 - 1.0,
+                _ => (next() % 1_000_000) as f64 * (N as f64 + 4.0) / 1e6 - 2.0,
+            };
+            let mut corners = [0; 3].map(|_| Vec2::new(coordinate(), coordinate()));
+            if i % 7 == 0 {
+                corners[2] = corners[0] + (corners[1] - corners[0]) * 0.5; // degenerate
+            }
+            let mut painted = blank_image(N);
+            fill_triangle(&mut painted, N, corners, COLOUR);
+            let [a, b, c] = corners;
+            let area = (b - a).perp_dot(c - a);
+            for y in 0..N {
+                for x in 0..N {
+                    let p = Vec2::new(x as f64 + 0.5, y as f64 + 0.5);
+                    let w = [(b - a).perp_dot(p - a), (c - b).perp_dot(p - b), (a - c).perp_dot(p - c)];
+                    let inside = area != 0.0 && w.iter().all(|w| w * area >= 0.0);
+                    let expected = if inside { COLOUR } else { [0xff; 3] };
+                    assert_eq!(painted[3 * (y * N + x)..3 * (y * N + x) + 3], expected, "triangle {corners:?}, pixel ({x}, {y})");
+                }
+            }
+            assert!(painted[3 * N * N..].iter().all(|&b| b == 0xff), "the padding is left white");
+            // Painting over fabric keeps it.
+            let before = painted.clone();
+            fill_triangle(&mut painted, N, corners, COLOUR);
+            assert_eq!(painted, before);
         }
     }
 
