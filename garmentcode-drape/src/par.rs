@@ -50,6 +50,36 @@ pub(crate) fn chunks<T: Send>(threads: usize, n: usize, work: impl Fn(Range<usiz
     done.into_iter().map(|(_, t)| t).collect()
 }
 
+/// `work(i, &mut out[i])` for every item of `out`, on up to `threads` threads: the same
+/// fixed chunks as [`chunks`], each written in place (no list per chunk to collect).
+pub(crate) fn fill<T: Send>(threads: usize, out: &mut [T], work: impl Fn(usize, &mut T) + Sync) {
+    let count = out.len().div_ceil(CHUNK);
+    let run = |c: usize, chunk: &mut [T]| {
+        for (k, item) in chunk.iter_mut().enumerate() {
+            work(c * CHUNK + k, item);
+        }
+    };
+    if threads <= 1 || count <= 1 {
+        out.chunks_mut(CHUNK).enumerate().for_each(|(c, chunk)| run(c, chunk));
+        return;
+    }
+    let queue = std::sync::Mutex::new(out.chunks_mut(CHUNK).enumerate());
+    let worker = || {
+        loop {
+            let next = queue.lock().unwrap_or_else(std::sync::PoisonError::into_inner).next();
+            let Some((c, chunk)) = next else { return };
+            run(c, chunk);
+        }
+    };
+    std::thread::scope(|s| {
+        let helpers: Vec<_> = (1..threads.min(count)).map(|_| s.spawn(worker)).collect();
+        worker();
+        for h in helpers {
+            h.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+        }
+    });
+}
+
 /// [`chunks`] whose results are lists, concatenated in order.
 pub(crate) fn flat<T: Send>(threads: usize, n: usize, work: impl Fn(Range<usize>) -> Vec<T> + Sync) -> Vec<T> {
     chunks(threads, n, work).into_iter().flatten().collect()
@@ -67,5 +97,10 @@ mod tests {
             assert_eq!(flat(t, 1000, square), expected, "{t} threads");
         }
         assert!(flat(2, 0, square).is_empty());
+        for t in [1, 2, 3, 8] {
+            let mut out = vec![0; 1000];
+            fill(t, &mut out, |i, o| *o = i * i);
+            assert_eq!(out, expected, "{t} threads, in place");
+        }
     }
 }

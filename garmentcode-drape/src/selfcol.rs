@@ -562,14 +562,18 @@ impl SelfCollision {
         let near = near_lo.cmpge(cube_lo).all() && near_hi.cmple(cube_hi).all();
         let (search_lo, search_hi) = if near { (near_lo, near_hi) } else { (cube_lo, cube_hi) };
         let (faces, owns, bvh, face_reach) = (&self.faces, &self.owns, &self.bvh, &self.face_reach);
-        // Distance from the spring's box to the box `[b_lo, b_hi]`.
-        let gap = |b_lo: Vec3, b_hi: Vec3| (b_lo - hi).max(lo - b_hi).max(Vec3::ZERO).length();
+        // Whether the box `[b_lo, b_hi]` is farther from the spring's box than the margin plus
+        // the look-aheads `reach_ab + reach` (squared distances: no square root per face).
+        let far = |b_lo: Vec3, b_hi: Vec3, reach: f64| {
+            let limit = margin + 1e-9 + reach_ab + reach;
+            (b_lo - hi).max(lo - b_hi).max(Vec3::ZERO).length_squared() > limit * limit
+        };
         self.for_each_near(Some(s), search_lo, search_hi, |f| {
             if near && !bvh.meets(f, cube_lo, cube_hi) {
                 return;
             }
             let (f_lo, f_hi) = bvh.face_box(f);
-            if gap(f_lo, f_hi) - reach_ab - face_reach[f] > margin + 1e-9 {
+            if far(f_lo, f_hi, face_reach[f]) {
                 return;
             }
             let face = faces[f];
@@ -578,7 +582,7 @@ impl SelfCollision {
                 if !owns[f][k] || e0 == a || e0 == b || e1 == a || e1 == b {
                     continue;
                 }
-                if gap(x[e0].min(x[e1]), x[e0].max(x[e1])) - reach_ab - reach[e0].max(reach[e1]) > margin + 1e-9 {
+                if far(x[e0].min(x[e1]), x[e0].max(x[e1]), reach[e0].max(reach[e1])) {
                     continue;
                 }
                 let (ta, tb, dist) = closest_edge_edge(pa, pb, x[e0], x[e1], 1e-3);

@@ -515,6 +515,8 @@ pub fn drape_with_progress(
     // 0: no drag; 1: crossing a panel of another part, onto its own part; 2: inside the body, out.
     let mut drag = vec![0u8; n];
     let mut dragged: Vec<usize> = Vec::new();
+    // Each substep's spring corrections (the first two of four), then the bending corrections.
+    let mut corrections: Vec<Option<[Vec3; 4]>> = vec![None; cloth.springs.len() + cloth.bends.len()];
     let threads = par::threads(settings.threads);
     let mut self_collision = (settings.self_collision || (parts.is_some() && settings.body_drag))
         .then(|| SelfCollision::new(mesh.faces.iter().map(|f| f.vertices).collect(), &x));
@@ -636,21 +638,23 @@ pub fn drape_with_progress(
                 sc.project(&x, &cloth.inv_mass, r, &mut delta);
             }
             // Springs and bending: the corrections on all threads, added in constraint order.
-            let corrections = par::chunks(threads, cloth.springs.len().max(cloth.bends.len()), |range| {
-                let springs = &cloth.springs[range.start.min(cloth.springs.len())..range.end.min(cloth.springs.len())];
-                let bends = &cloth.bends[range.start.min(cloth.bends.len())..range.end.min(cloth.bends.len())];
-                let springs: Vec<_> =
-                    springs.iter().map(|&(ends, rest)| spring_correction(&cloth, spring, dt, (&x, &v), ends, rest)).collect();
-                let bends: Vec<_> = bends.iter().map(|&b| bend_correction(&cloth, bend, dt, (&x, &v), b)).collect();
-                (springs, bends)
+            let ns = cloth.springs.len();
+            par::fill(threads, &mut corrections, |k, out| {
+                *out = match k.checked_sub(ns) {
+                    None => {
+                        let (ends, rest) = cloth.springs[k];
+                        spring_correction(&cloth, spring, dt, (&x, &v), ends, rest).map(|[di, dj]| [di, dj, Vec3::ZERO, Vec3::ZERO])
+                    }
+                    Some(b) => bend_correction(&cloth, bend, dt, (&x, &v), cloth.bends[b]),
+                }
             });
-            for (&([i, j], _), c) in cloth.springs.iter().zip(corrections.iter().flat_map(|(s, _)| s)) {
-                if let Some([di, dj]) = *c {
+            for (&([i, j], _), c) in cloth.springs.iter().zip(&corrections[..ns]) {
+                if let Some([di, dj, _, _]) = *c {
                     delta[i] += di;
                     delta[j] -= dj;
                 }
             }
-            for (&[i, j, k, l], c) in cloth.bends.iter().zip(corrections.iter().flat_map(|(_, b)| b)) {
+            for (&[i, j, k, l], c) in cloth.bends.iter().zip(&corrections[ns..]) {
                 if let Some([di, dj, dk, dl]) = *c {
                     delta[i] += di;
                     delta[j] += dj;
@@ -759,7 +763,11 @@ fn bend_correction(cloth: &Cloth, bend: Compliance, dt: f64, (x, v): (&[Vec3], &
     let (n1, n2) = (n1 / l1, n2 / l2);
     let e = x4 - x3;
     let e_len = e.length();
-    let e_hat = e.normalize_or_zero();
+    // `e.normalize_or_zero()`, the same bytes without a second square root.
+    let e_hat = match 1.0 / e_len {
+        rcp if rcp.is_finite() && rcp > 0.0 => e * rcp,
+        _ => Vec3::ZERO,
+    };
     let flip = -sign(n1.cross(n2).dot(e));
     let angle = acos(n1.dot(n2));
     let g1 = n1 * e_len * flip;
