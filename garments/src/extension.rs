@@ -168,7 +168,10 @@ fn fold_turtle(a: &mut Arena, half: &BodiceHalf) -> Result<()> {
 
 /// Double a band: its free edge moves out by the band's depth and a fold line
 /// (folded flat, 180°) marks where the edge was, so the band folds back onto itself
-/// to its first depth. The side seams keep their one edge each.
+/// to its first depth. The line runs so that the part turned (the part right of it)
+/// is the free one, whichever way the panel's outline runs (a band's front and back
+/// panels run opposite ways): the half sewn on stays where it is. The side seams
+/// keep their one edge each.
 fn double_band(a: &mut Arena, band: &StraightBandPanel, free: InterfaceId, attached: InterfaceId) -> Result<()> {
     let edge = free.edges(a)[0];
     let (s, t) = (a.pos(a.start(edge)), a.pos(a.end(edge)));
@@ -177,6 +180,7 @@ fn double_band(a: &mut Arena, band: &StraightBandPanel, free: InterfaceId, attac
     let (vs, vt) = (a.start(edge), a.end(edge));
     a.set_pos(vs, s + out);
     a.set_pos(vt, t + out);
-    fold_line(a, &band.panel, "fold", s, t, 180.0)?;
+    let (from, to) = if (t - s).perp_dot(out) < 0.0 { (s, t) } else { (t, s) };
+    fold_line(a, &band.panel, "fold", from, to, 180.0)?;
     Ok(())
 }

@@ -119,6 +119,74 @@ fn the_pleated_skirts_flat_parts_are_sewn_to_the_band_and_bodice_beside_them() {
     }
 }
 
+/// Per pleat stitch of a box mesh: how far behind its skirt panel (towards the body,
+/// cm) the stitch's own vertices start (those no other stitch merged), sorted, less
+/// how far behind it the vertex shared with the flat parts' seam does.
+fn pleat_ridges(p: &Pattern) -> Vec<(String, Vec<f64>)> {
+    use garmentcode::mesh::VertexLabel;
+    let mesh = BoxMesh::new(p, 1.0).unwrap();
+    let mut ridges = Vec::new();
+    for (k, st) in mesh.stitches.iter().enumerate() {
+        let (pi, name) = (st.sides[0].0, &mesh.panels[st.sides[0].0].name);
+        if st.sides[1].0 != pi || !name.starts_with("skirt_") {
+            continue;
+        }
+        // The panel's plane: its own vertices' mean z (in front of the body or behind it).
+        let own: Vec<f64> =
+            mesh.vertices.iter().zip(&mesh.labels).filter(|(_, l)| **l == VertexLabel::Panel(pi)).map(|(v, _)| v.z).collect();
+        let plane = own.iter().sum::<f64>() / own.len() as f64;
+        let behind = |z: f64| (plane - z) * plane.signum();
+        let mut top = None;
+        let mut depths = Vec::new();
+        for (v, l) in mesh.vertices.iter().zip(&mesh.labels) {
+            let VertexLabel::Stitch(ks) = l else { continue };
+            if ks.iter().all(|&j| j == k) {
+                depths.push(behind(v.z));
+            } else if ks.contains(&k) {
+                top = Some(behind(v.z));
+            }
+        }
+        let top = top.expect("a pleat meets the flat parts");
+        let mut ridge: Vec<f64> = depths.iter().map(|d| d - top).collect();
+        ridge.sort_by(f64::total_cmp);
+        ridges.push((name.clone(), ridge));
+    }
+    ridges
+}
+
+#[test]
+fn a_pleats_layers_start_folded_behind_the_skirt_in_the_box_mesh() {
+    // Before, each pleat's stitched pairs all started at the one point where its two
+    // pieces meet, in the panel's plane: the folded layers lay flat on each other and
+    // crossed in the drape (200 crossing edges in the 4 cm below the waist).
+    let mut design = builtin::design("pleated-skirt").unwrap();
+    for style in [PleatStyle::BoxAndKnife, PleatStyle::KnifePleats, PleatStyle::BoxPleats] {
+        design.extension.pleats.style = Some(style);
+        for (body, _) in builtin::BODIES {
+            let p = build_design("pleated-skirt", &design, body);
+            let ridges = pleat_ridges(&p);
+            assert_eq!(
+                ridges.len(),
+                if style == PleatStyle::BoxPleats {
+                    12
+                } else if style == PleatStyle::KnifePleats {
+                    6
+                } else {
+                    9
+                }
+            );
+            for (name, ridge) in ridges {
+                // A ridge going back from where the pleat meets the flat parts, a pair
+                // every 0.83 cm (2.5 cm at 1 cm, 4 vertices a side), to the pleat's
+                // depth (2.5 cm) at its inner fold.
+                let steps: Vec<f64> = ridge.windows(2).map(|w| w[1] - w[0]).collect();
+                assert!(ridge.len() == 3 && steps.iter().all(|d| (d - 2.5 / 3.0).abs() < 1e-6), "{style:?} {body} {name}: {ridge:?}");
+                assert!((ridge[2] - 2.5).abs() < 1e-6, "{style:?} {body} {name}: {ridge:?}");
+            }
+        }
+    }
+}
+
 #[test]
 fn a_pocket_is_not_placed_across_a_dart() {
     // Sampled (`sample -n 6 -s 7 --extended`, sample 2): the chest pocket's corners lay
@@ -294,5 +362,110 @@ fn hip_pockets_sit_on_every_kind_of_skirt() {
         assert_eq!(placements, 2, "{name}");
         assert_eq!(p.inner_stitches.len(), 6, "{name}");
         BoxMesh::new(&p, 1.0).unwrap_or_else(|e| panic!("{name}: {e}"));
+    }
+}
+
+/// Per pocket stitch of a box mesh: the pocket, and the farthest apart (cm) any two of
+/// its vertices that the stitch merges start (the pocket's edge and the placement
+/// line under it, paired as the box mesh pairs them).
+fn pocket_stitch_spans(mesh: &BoxMesh) -> Vec<(String, f64)> {
+    let mut spans = Vec::new();
+    for st in &mesh.stitches {
+        let [(p0, e0), (p1, e1)] = st.sides;
+        let (a, b) = (&mesh.panels[p0], &mesh.panels[p1]);
+        if !a.name.contains("pocket") && !b.name.contains("pocket") {
+            continue;
+        }
+        let mut r0 = a.edges[e0].local.clone();
+        if !st.right_wrong {
+            r0.reverse();
+        }
+        let span =
+            r0.iter().zip(&b.edges[e1].local).map(|(&i, &j)| (a.to_3d(a.points[i]) - b.to_3d(b.points[j])).length()).fold(0.0, f64::max);
+        spans.push((format!("{} / {}", a.name, b.name), span));
+    }
+    spans
+}
+
+#[test]
+fn a_trouser_pocket_lies_on_the_front_of_each_leg_its_corners_on_the_lines_corners() {
+    // Sampled (`sample -n 6 -s 7 --extended`, sample 3): the pocket on the mirrored leg
+    // crumpled in the drape, its stitches pairing corner with corner.
+    for (body, _) in builtin::BODIES {
+        let mut d = Design::defaults();
+        d.meta.bottom = Some(BottomKind::Pants);
+        d.extension.pockets.pants = true;
+        let p = build_design("pocket-trousers", &d, body);
+        let mesh = BoxMesh::new(&p, 1.0).unwrap();
+        let spans = pocket_stitch_spans(&mesh);
+        assert_eq!(spans.len(), 6, "{body}");
+        for (pair, span) in &spans {
+            // Each pocket vertex starts beside the line's vertex it is sewn to (the pocket
+            // lies 0.3 cm off the leg).
+            assert!(*span < 1.0, "{body} {pair}: {span:.2} cm");
+        }
+        // On the outer face of the leg: in front of it.
+        for leg in ["pant_f_r", "pant_f_l"] {
+            let z = |name: &str| {
+                let pm = mesh.panels.iter().find(|m| m.name == name).unwrap();
+                pm.points.iter().map(|q| pm.to_3d(*q).z).sum::<f64>() / pm.points.len() as f64
+            };
+            let pocket = format!("{leg}_pocket");
+            // The leg's mean z is over the whole leg; the pocket sits near its top, where the
+            // leg is furthest forward: compare with the placement line's own points.
+            let spec = p.panel(leg).unwrap();
+            let line = &spec.lines[0];
+            let line_z =
+                line.vertices.iter().map(|v| spec.point_to_3d(garmentcode::Vec2::from(*v)).z).sum::<f64>() / line.vertices.len() as f64;
+            assert!(z(&pocket) > line_z, "{body} {pocket}: z {:.2} behind its line's {line_z:.2} (leg {:.2})", z(&pocket), z(leg));
+        }
+    }
+}
+
+#[test]
+fn a_doubled_cuff_folds_its_free_half_inside_onto_the_half_sewn_on() {
+    // Before, the back cuff panel (its outline running the other way) turned its half
+    // sewn to the sleeve instead of its free half, and the front and back folded to
+    // opposite faces: the two layers crossed at the side seams (352 crossing edges in
+    // the drape).
+    let p = build("pocket-shirt", "mean_all");
+    let mesh = BoxMesh::new(&p, 1.0).unwrap();
+    for side in ["right", "left"] {
+        let names = [format!("sl_{side}_cuff_f"), format!("sl_{side}_cuff_b")];
+        let panels: Vec<&garmentcode::mesh::PanelMesh> = names.iter().map(|n| mesh.panels.iter().find(|m| &m.name == n).unwrap()).collect();
+        let plain =
+            |m: &garmentcode::mesh::PanelMesh, q: garmentcode::Vec2| m.rotation * garmentcode::Vec3::new(q.x, q.y, 0.0) + m.translation;
+        // The cuff's middle: between its front and back panels.
+        let all: Vec<garmentcode::Vec3> = panels.iter().flat_map(|m| m.points.iter().map(|q| plain(m, *q))).collect();
+        let middle = all.iter().copied().sum::<garmentcode::Vec3>() / all.len() as f64;
+        for (name, m) in names.iter().zip(&panels) {
+            // The edge sewn to the sleeve stays where it was placed.
+            let sewn = p
+                .stitches
+                .iter()
+                .flat_map(|st| [(&st.sides[0], &st.sides[1]), (&st.sides[1], &st.sides[0])])
+                .find(|(s, o)| &s.panel == name && o.panel.contains("sleeve"))
+                .unwrap()
+                .0
+                .edge;
+            for &l in &m.edges[sewn].local {
+                assert!((m.to_3d(m.points[l]) - plain(m, m.points[l])).length() < 1e-9, "{name}: its seam to the sleeve moved");
+            }
+            // The turned half lies on the inner side, towards the cuff's middle, FOLD_GAP
+            // off the half sewn on.
+            let turned: Vec<f64> = m
+                .points
+                .iter()
+                .filter(|q| (m.to_3d(**q) - plain(m, **q)).length() > 1.5)
+                .map(|q| {
+                    let (now, was) = (m.to_3d(*q), plain(m, *q));
+                    let inward = (middle - was).z.signum();
+                    (now.z - was.z) * inward
+                })
+                .collect();
+            assert!(turned.len() > 50, "{name}: {} points turned", turned.len());
+            let off: Vec<&f64> = turned.iter().filter(|d| (*d - garmentcode::mesh::FOLD_GAP).abs() > 1e-6).collect();
+            assert!(off.is_empty(), "{name}: {} of {} off: {:?}", off.len(), turned.len(), &off[..off.len().min(8)]);
+        }
     }
 }

@@ -35,8 +35,9 @@
 //! a panel's holes' and inner lines' edges follow its outline's (sampled, stitched and
 //! numbered like them); holes bound the triangulation like the outline (left open),
 //! lines are constraints that bound nothing (rows of mesh edges); inner stitches follow
-//! the stitches; [`Fold`]s turn part of a panel when it is placed in 3D; the vertex
-//! labels name lines, holes and layers.
+//! the stitches; [`Fold`]s turn part of a panel when it is placed in 3D; a pleat's
+//! stitched pairs start on a ridge behind the panel, as deep as the pleat, not all at
+//! one point in its plane; the vertex labels name lines, holes and layers.
 //!
 //! The files the reference writes (`<name>_boxmesh.obj`, `<name>_sim_segmentation.txt`,
 //! `<name>_orig_lens.pickle`, `<name>_vertex_labels.yaml`, `<name>_material.mtl`) come from
@@ -57,6 +58,7 @@
 //! areas), naming the resolution that fits: time and memory are bounded.
 
 mod curve;
+mod pleat;
 mod triangulate;
 
 use triangulate::HashMap;
@@ -231,7 +233,8 @@ pub const FOLD_GAP: f64 = 0.5;
 /// right of the line (through its first and last vertex, looking along it) turns
 /// about it by `angle`, right-handed about its direction (towards the panel's `−z`,
 /// away from its front, for angles under 180°; at 180° it lies folded flat behind the
-/// left part). The turned part stands [`FOLD_GAP`] off along its own normal, scaled by
+/// left part). That is for an outline running counter-clockwise (by its area); one
+/// running clockwise faces `−z`, and its folds turn towards `+z` (mirrored). The turned part stands [`FOLD_GAP`] off along its own normal, scaled by
 /// `(1 − cos angle) / 2` (all of it when folded flat, none when flat) and ramping in
 /// over the first `FOLD_GAP` from the line: two layers folded flat would otherwise lie
 /// exactly on each other, and a simulator could not tell which is in front.
@@ -243,18 +246,22 @@ pub struct Fold {
     pub direction: Vec2,
     /// The turn, radians.
     pub angle: f64,
+    /// The panel's outline runs clockwise: the turn goes towards `+z`.
+    pub mirrored: bool,
 }
 
 impl Fold {
     /// The fold lines of a panel.
     fn of(p: &PanelSpec) -> Vec<Fold> {
+        let corner = |k: usize| Vec2::from(p.vertices[k]);
+        let area: f64 = p.edges.iter().map(|e| corner(e.endpoints[0]).perp_dot(corner(e.endpoints[1]))).sum();
         p.lines
             .iter()
             .filter_map(|l| match l.kind {
                 crate::LineKind::Fold { angle } => {
                     let (a, b) = (Vec2::from(*l.vertices.first()?), Vec2::from(*l.vertices.last()?));
                     let direction = (b - a).try_normalize()?;
-                    Some(Fold { at: a, direction, angle: angle.to_radians() })
+                    Some(Fold { at: a, direction, angle: angle.to_radians(), mirrored: area < 0.0 })
                 }
                 _ => None,
             })
@@ -266,6 +273,10 @@ impl Fold {
         let beyond = -self.direction.perp_dot(p - self.at);
         if beyond <= 0.0 {
             return q;
+        }
+        if self.mirrored {
+            let flip = |v: Vec3| Vec3::new(v.x, v.y, -v.z);
+            return flip(Fold { mirrored: false, ..*self }.turn(p, flip(q)));
         }
         let axis = Vec3::new(self.direction.x, self.direction.y, 0.0);
         // Rodrigues' rotation about the line.
@@ -624,6 +635,8 @@ impl BoxMesh {
                 }
             }
         }
+
+        pleat::raise_ridges(&specs, &panels, &stitches, &loc_glob, &mut globals);
 
         // Assembly.
         let n_stitch_vertices = globals.len();
