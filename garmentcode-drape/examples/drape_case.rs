@@ -65,6 +65,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         if let Some(k) = trace
             && progress.frame % k == 0
         {
+            eprintln!("frame {}: {} vertices moving", progress.frame, progress.non_static_vertices);
             let dir = out.join("trace");
             written = written.clone().and(std::fs::create_dir_all(&dir).map_err(|e| e.to_string())).and(
                 std::fs::write(dir.join(format!("{:05}_sim.obj", progress.frame)), sim_obj(&mesh, progress.positions))

@@ -644,7 +644,7 @@ pub fn drape_with_progress(
             }
             if let Some(sc) = &self_collision {
                 sc.project(&x, &cloth.inv_mass, r, &mut delta);
-                untangle.project(&x, sc.faces(), &cloth.inv_mass, r, &mut delta);
+                untangle.project(&x, sc.faces(), r, &mut delta);
             }
             // Springs and bending: the corrections on all threads, added in constraint order.
             let corrections = par::chunks(threads, cloth.springs.len().max(cloth.bends.len()), |range| {

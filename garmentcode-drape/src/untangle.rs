@@ -10,8 +10,7 @@
 //! Here an edge that starts crossing a triangle during the drape is pushed back: the frame
 //! before, both its ends were on one side of the triangle's plane, so the end that is now on
 //! the other side (the one that passed through) is the wrong one, and it is pushed back to
-//! that side, the triangle's corners the other way (as a point–triangle contact whose side
-//! was known before the crossing). Where the ends were already on both sides of the plane
+//! that side (as a point–triangle contact whose side was known before the crossing). Where the ends were already on both sides of the plane
 //! (the edge came in past the triangle's border), the end nearer the plane is taken: it has
 //! just come through. The end stays the wrong one for as long as its edge crosses the
 //! garment, whichever face it crosses first. Edges that cross from the start (the box mesh's
@@ -21,8 +20,6 @@
 use std::collections::BTreeMap;
 
 use garmentcode::Vec3;
-
-use crate::bvh::closest_on_triangle;
 
 /// One edge being pulled back out of a face: its wrong end, the face, and the side of the
 /// face's plane (+1: along its normal, −1: against it) the end must go back to.
@@ -110,28 +107,24 @@ impl Untangle {
     }
 
     /// Adds the pulls' corrections at the predicted positions `x` to `delta`: each wrong end
-    /// to `r` beyond its face's plane on its side, the face's corners the other way (by
-    /// their weights at the point closest to the end), shared by inverse mass.
-    pub fn project(&self, x: &[Vec3], faces: &[[usize; 3]], inv_mass: &[f64], r: f64, delta: &mut [Vec3]) {
+    /// to `r` beyond its face's plane on its side, the mean of its pulls (an end is often the
+    /// wrong end of several edges: their sum would throw it through the next layer). The
+    /// face's corners are not moved (as the reference's point–triangle contacts move only the
+    /// point): moving them pushes their own edges through the layers beside them.
+    pub fn project(&self, x: &[Vec3], faces: &[[usize; 3]], r: f64, delta: &mut [Vec3]) {
+        let mut sums: BTreeMap<usize, (Vec3, f64)> = BTreeMap::new();
         for pull in &self.pulls {
-            let corners = faces[pull.face];
-            let t = corners.map(|i| x[i]);
+            let t = faces[pull.face].map(|i| x[i]);
             let n = (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero() * pull.side;
-            let p = x[pull.particle];
-            let gap = n.dot(p - t[0]) - r;
-            if gap >= 0.0 || n == Vec3::ZERO {
-                continue;
+            let gap = n.dot(x[pull.particle] - t[0]) - r;
+            let sum = sums.entry(pull.particle).or_insert((Vec3::ZERO, 0.0));
+            sum.1 += 1.0;
+            if gap < 0.0 {
+                sum.0 -= n * gap;
             }
-            let (w, _) = closest_on_triangle(p, &t);
-            let denom = inv_mass[pull.particle] + (0..3).map(|k| inv_mass[corners[k]] * w[k] * w[k]).sum::<f64>();
-            if denom <= 1e-12 {
-                continue;
-            }
-            let step = -gap / denom;
-            delta[pull.particle] += n * (inv_mass[pull.particle] * step);
-            for k in 0..3 {
-                delta[corners[k]] -= n * (inv_mass[corners[k]] * w[k] * step);
-            }
+        }
+        for (i, (sum, count)) in sums {
+            delta[i] += sum / count;
         }
     }
 
@@ -198,7 +191,7 @@ mod tests {
             for _ in 0..10 {
                 let mut delta = vec![Vec3::ZERO; x.len()];
                 sc.project(&x, &inv_mass, 0.1, &mut delta);
-                pulls.project(&x, &faces, &inv_mass, 0.1, &mut delta);
+                pulls.project(&x, &faces, 0.1, &mut delta);
                 for (&([a, b], _), &len) in edges.iter().zip(&rest) {
                     let d = x[b] - x[a];
                     let c = d.length() - len;
