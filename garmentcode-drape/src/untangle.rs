@@ -140,9 +140,12 @@ mod tests {
     use super::*;
     use crate::selfcol::SelfCollision;
 
+    /// Faces, positions, springs.
+    type Sheets = (Vec<[usize; 3]>, Vec<Vec3>, Vec<([usize; 2], f64)>);
+
     /// Two flat 8 × 8 cm sheets of 1 cm squares, 1 cm apart (y = 0 and y = 1, the upper one
     /// shifted by a fraction of a square), and the edges of their faces.
-    fn sheets() -> (Vec<[usize; 3]>, Vec<Vec3>, Vec<([usize; 2], f64)>) {
+    fn sheets() -> Sheets {
         let (mut faces, mut x) = (Vec::new(), Vec::new());
         let side = 9;
         for sheet in 0..2 {
