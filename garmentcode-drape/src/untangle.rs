@@ -10,12 +10,13 @@
 //! Here an edge that starts crossing a triangle during the drape is pushed back: the frame
 //! before, both its ends were on one side of the triangle's plane, so the end that is now on
 //! the other side (the one that passed through) is the wrong one, and it is pushed back to
-//! that side (as a point–triangle contact whose side was known before the crossing). Where the ends were already on both sides of the plane
-//! (the edge came in past the triangle's border), the end nearer the plane is taken: it has
-//! just come through. The end stays the wrong one for as long as its edge crosses the
-//! garment, whichever face it crosses first. Edges that cross from the start (the box mesh's
-//! stretched seam faces, which the seams' closing undoes) are left alone for the first
-//! [`START_FRAMES`] frames, then undone from their end nearer the face.
+//! that side (as a point–triangle contact whose side was known before the crossing). Where
+//! the ends were already on both sides of the plane (the edge came in past the triangle's
+//! border), the end nearer the plane is taken: it has just come through. The end stays the
+//! wrong one for as long as its edge crosses the garment, whichever face it crosses first.
+//! Edges that cross from the start (the box mesh's stretched seam faces, which the seams'
+//! closing undoes) are left alone for the first [`START_FRAMES`] frames, then undone from
+//! their end nearer the face.
 
 use std::collections::BTreeMap;
 
