@@ -7,8 +7,10 @@
 //!
 //! `DRAPE_THREADS=N` runs on N threads (default: all; the positions do not depend on it).
 //!
-//! Experiments: `DRAPE_SELF_COLLISION=0` turns self-collision off; `DRAPE_JITTER=CM` moves
-//! the interior vertices of every panel by up to CM in the panel's plane; `DRAPE_BOXMESH=CASE_DIR`
+//! Experiments: `DRAPE_SELF_COLLISION=0` turns self-collision off; `DRAPE_UNTANGLE=0` leaves
+//! new crossings alone (as the reference does); `DRAPE_TRACE=K` writes the garment every K
+//! frames as `OUT_DIR/trace/FRAME_sim.obj` (to see where crossings start); `DRAPE_JITTER=CM`
+//! moves the interior vertices of every panel by up to CM in the panel's plane; `DRAPE_BOXMESH=CASE_DIR`
 //! drapes the reference's own box mesh of a case folder instead of ours (its
 //! `CASE_boxmesh.obj`, `CASE_sim_segmentation.txt`, `CASE_vertex_labels.yaml`, and the rest
 //! lengths of `CASE_orig_lens.pickle` written as `i j length` lines to `OUT_DIR/orig_lens.txt`,
@@ -18,7 +20,7 @@
 use std::path::Path;
 
 use garmentcode::mesh::{BoxMesh, MeshFace, VertexLabel};
-use garmentcode_drape::{BodyMesh, Settings, drape, sim_obj};
+use garmentcode_drape::{BodyMesh, Next, Settings, drape_with_progress, sim_obj};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -53,8 +55,26 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if std::env::var("DRAPE_SELF_COLLISION").is_ok_and(|v| v == "0") {
         settings.self_collision = false;
     }
-    let result = drape(&mesh, &body, &settings)?;
+    if std::env::var("DRAPE_UNTANGLE").is_ok_and(|v| v == "0") {
+        settings.untangle = false;
+    }
     std::fs::create_dir_all(out)?;
+    let trace: Option<usize> = std::env::var("DRAPE_TRACE").ok().and_then(|k| k.parse().ok()).filter(|&k| k > 0);
+    let mut written = Ok(());
+    let result = drape_with_progress(&mesh, &body, &settings, |progress| {
+        if let Some(k) = trace
+            && progress.frame % k == 0
+        {
+            eprintln!("frame {}: {} vertices moving", progress.frame, progress.non_static_vertices);
+            let dir = out.join("trace");
+            written = written.clone().and(std::fs::create_dir_all(&dir).map_err(|e| e.to_string())).and(
+                std::fs::write(dir.join(format!("{:05}_sim.obj", progress.frame)), sim_obj(&mesh, progress.positions))
+                    .map_err(|e| e.to_string()),
+            );
+        }
+        Next::Continue
+    })?;
+    written?;
     if reference.is_some() {
         let mut obj = String::new();
         for p in &result.positions {

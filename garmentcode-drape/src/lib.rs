@@ -33,6 +33,7 @@ pub mod render;
 mod selfcol;
 pub mod solver;
 mod strain;
+mod untangle;
 
 pub use body::{BodyError, BodyMesh};
 pub use fabric::{Fabric, FabricError};

@@ -36,6 +36,7 @@ use crate::body::BodyMesh;
 use crate::par;
 use crate::parts::Parts;
 use crate::selfcol::SelfCollision;
+use crate::untangle::Untangle;
 
 /// One attachment: the listed vertices are kept on the positive side of a plane.
 #[derive(Clone, Debug, PartialEq)]
@@ -116,6 +117,11 @@ pub struct Settings {
     /// Point–triangle and edge–edge self-collision (`enable_triangle_particle_collisions`,
     /// `enable_edge_edge_collisions`).
     pub self_collision: bool,
+    /// Push back the end of an edge that starts crossing the garment during the drape to the
+    /// side of the crossed triangle it came from, where the part drag does not act (panels of
+    /// one body part, a panel with itself). Beyond the reference, which leaves those
+    /// crossings; on by default.
+    pub untangle: bool,
     /// Threads to run on (0: as many as the machine has). The positions do not depend on it.
     pub threads: usize,
 }
@@ -149,6 +155,7 @@ impl Default for Settings {
             non_static_percent: 1.5,
             body_drag: true,
             self_collision: true,
+            untangle: true,
             threads: 0,
             reference_margin: 0.1,
             panel_labels: BTreeMap::new(),
@@ -520,6 +527,7 @@ pub fn drape_with_progress(
     let threads = par::threads(settings.threads);
     let mut self_collision = (settings.self_collision || (parts.is_some() && settings.body_drag))
         .then(|| SelfCollision::new(mesh.faces.iter().map(|f| f.vertices).collect(), &x));
+    let mut untangle = Untangle::default();
     let (mut frames, mut converged, mut non_static) = (0, false, 0);
 
     for frame in 0..settings.max_frames {
@@ -588,6 +596,8 @@ pub fn drape_with_progress(
                     }
                 }
             }
+            // Crossings the drag does not undo.
+            untangle.update(&x, sc.faces(), &sc.crossings, |k, l, _| settings.untangle && drag[k] != 1 && drag[l] != 1);
         }
         dragged.clear();
         dragged.extend((0..n).filter(|&i| drag[i] != 0 && draggable[i]));
@@ -636,6 +646,7 @@ pub fn drape_with_progress(
             }
             if let Some(sc) = &self_collision {
                 sc.project(&x, &cloth.inv_mass, r, &mut delta);
+                untangle.project(&x, sc.faces(), r, &mut delta);
             }
             // Springs and bending: the corrections on all threads, added in constraint order.
             let ns = cloth.springs.len();
