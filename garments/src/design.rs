@@ -171,9 +171,9 @@ pub struct Design {
     /// Trousers.
     pub pants: Pants,
     /// Past the reference's language (patch pockets, pleats, diamond darts, folded
-    /// cuffs and collars): all off by default and left out of this design space,
+    /// cuffs and collars, one-piece sleeves, hip ease): all off by default and left out of this design space,
     /// which is the reference's; [`extended_design_space`] adds them.
-    #[param(pockets(skip), pleats(skip), darts(skip), cuff(skip), collar(skip), sleeve(skip))]
+    #[param(pockets(skip), pleats(skip), darts(skip), cuff(skip), collar(skip), sleeve(skip), fit(skip))]
     pub extension: Extension,
 }
 
@@ -211,6 +211,8 @@ pub struct Extension {
     pub collar: FoldedCollar,
     /// Sleeves of one panel, folded along the top of the arm.
     pub sleeve: OnePieceSleeve,
+    /// Ease of fitted skirts.
+    pub fit: Fit,
 }
 
 /// Patch pockets.
@@ -290,6 +292,15 @@ pub struct OnePieceSleeve {
     /// the arm instead of a seam (sleeves with a straight top: not with a standing shoulder).
     #[param(default = false, prob = 0.8)]
     pub one_piece: bool,
+}
+
+/// Ease of fitted skirts.
+#[derive(Clone, Debug, PartialEq, Params)]
+pub struct Fit {
+    /// Ease of pencil skirts at the hips, cm of circumference, shared by the front and
+    /// back panels (the reference's pencil skirt has none: it is the body's hips).
+    #[param(range = 0..=10, default = 0, prob = 0.5)]
+    pub hip_ease: f64,
 }
 
 /// Which components the garment has.

@@ -191,7 +191,11 @@ impl MetaGarment {
 }
 
 fn build_bottom(a: &mut Arena, body: &Body, design: &Design, kind: BottomKind, rise: Option<f64>) -> Result<BottomGarment> {
-    let opts = BottomOptions { pleats: crate::extension::pleating(&design.extension), ..BottomOptions::at_rise(rise) };
+    let opts = BottomOptions {
+        pleats: crate::extension::pleating(&design.extension),
+        hip_ease: design.extension.fit.hip_ease,
+        ..BottomOptions::at_rise(rise)
+    };
     let skirts = SkirtGroups::of(design);
     Ok(match kind {
         BottomKind::SkirtCircle => SkirtCircle::new(a, body, &design.flare_skirt, Symmetry::Symmetric, &opts)?.into(),

@@ -67,6 +67,8 @@ pub struct BottomOptions {
     /// Pleats at the waist of a two-panel skirt, front and back
     /// (`design.extension.pleats`).
     pub pleats: Option<[Pleating; 2]>,
+    /// Ease of fitted skirts at the hips, cm of circumference (`design.extension.fit.hip_ease`).
+    pub hip_ease: f64,
 }
 
 impl BottomOptions {

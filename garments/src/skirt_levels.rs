@@ -76,6 +76,7 @@ impl SkirtLevels {
                 without_slits: true,
                 without_gathers: true,
                 pleats: None,
+                hip_ease: opts.hip_ease,
             };
             let level = match l.level {
                 LevelKind::Skirt2 => Stackable::Skirt2(Skirt2::new(a, &lbody, skirts.skirt, &tier)?),

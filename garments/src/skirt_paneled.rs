@@ -454,7 +454,7 @@ impl PencilSkirt {
             d,
             &FittedPanelSpec {
                 waist: (waist - back_waist) / 2.0,
-                hips: (body.hips - body.hip_back_width) / 2.0,
+                hips: (body.hips - body.hip_back_width + opts.hip_ease / 2.0) / 2.0,
                 hips_depth,
                 length,
                 hipline_ext: 1.0,
@@ -477,7 +477,7 @@ impl PencilSkirt {
             d,
             &FittedPanelSpec {
                 waist: back_waist / 2.0,
-                hips: body.hip_back_width / 2.0,
+                hips: (body.hip_back_width + opts.hip_ease / 2.0) / 2.0,
                 hips_depth,
                 length,
                 hipline_ext: 1.05,

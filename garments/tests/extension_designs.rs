@@ -469,3 +469,24 @@ fn a_doubled_cuff_folds_its_free_half_inside_onto_the_half_sewn_on() {
         }
     }
 }
+
+/// Width of a panel's outline, cm.
+fn outline_width(p: &Pattern, panel: &str) -> f64 {
+    let xs = p.panel(panel).unwrap().vertices.iter().map(|v| v[0]);
+    xs.clone().fold(f64::NEG_INFINITY, f64::max) - xs.fold(f64::INFINITY, f64::min)
+}
+
+#[test]
+fn a_pencil_skirts_hip_ease_widens_its_front_and_back_by_the_ease() {
+    for (body, _) in builtin::BODIES {
+        let mut design = builtin::design("birch-dress").unwrap();
+        design.extension.fit.hip_ease = 0.0;
+        let fitted = build_design("birch-dress", &design, body);
+        design.extension.fit.hip_ease = 6.0;
+        let eased = build_design("birch-dress", &design, body);
+        for (panel, half) in [("skirt_front", 3.0), ("skirt_back", 3.0)] {
+            let grown = outline_width(&eased, panel) - outline_width(&fitted, panel);
+            assert!((grown - half).abs() < 1e-9, "{body} {panel}: {grown} cm wider");
+        }
+    }
+}
