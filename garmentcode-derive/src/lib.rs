@@ -49,6 +49,11 @@ use syn::{DeriveInput, parse_macro_input};
 ///   its schema; the value stays at the group's default;
 /// - `group(field(..))`: an override of a parameter of a nested group.
 ///
+/// `#[param(skip)]` on a group field leaves the whole group out of the schema (so out
+/// of sampling and of the design files read with it); its values stay at the group's
+/// defaults and are reachable by path, and the group's own `describe` still gives its
+/// parameters to a larger space that adds them.
+///
 /// Overrides change the schema, the defaults and sampling of that instance only.
 /// They are checked while compiling, at the override's tokens: a field name the
 /// group does not have, a default outside the (possibly new) range, a fractional

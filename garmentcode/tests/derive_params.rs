@@ -105,3 +105,27 @@ fn sampling_is_reproducible() {
     let c: Design = sampler.sample(&mut sample_rng(42, 8));
     assert_ne!(a, c);
 }
+
+/// A design whose second skirt is kept out of its schema whole.
+#[derive(Clone, Debug, PartialEq, Params)]
+struct WithHidden {
+    skirt: Skirt,
+    #[param(skip)]
+    hidden: Skirt,
+}
+
+#[test]
+fn a_skipped_group_is_out_of_the_schema_but_reachable_by_path() {
+    let space = WithHidden::design_space();
+    assert!(space.params().iter().all(|p| p.path.starts_with("skirt.")), "{:?}", space.params());
+    assert_eq!(space.params().len(), 6);
+    let mut d = WithHidden::defaults();
+    assert_eq!(d.hidden, Skirt::defaults());
+    assert_eq!(d.get_value(&["hidden", "panels"]), Some(Value::Int(4)));
+    d.set_value(&["hidden", "panels"], &Value::Int(9)).unwrap();
+    assert_eq!(d.hidden.panels, 9);
+    // Its own schema is still there for whoever adds it (as `extended_design_space` does).
+    let mut own = Vec::new();
+    Skirt::describe("hidden", &mut own);
+    assert_eq!(own.len(), 6);
+}

@@ -173,7 +173,7 @@ pub struct Design {
     /// Past the reference's language (patch pockets, pleats, diamond darts, folded
     /// cuffs and collars, one-piece sleeves, hip ease): all off by default and left out of this design space,
     /// which is the reference's; [`extended_design_space`] adds them.
-    #[param(pockets(skip), pleats(skip), darts(skip), cuff(skip), collar(skip), sleeve(skip), fit(skip))]
+    #[param(skip)]
     pub extension: Extension,
 }
 

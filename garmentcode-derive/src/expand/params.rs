@@ -46,7 +46,9 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
                 fields.push(quote_spanned! {ty.span()=>
                     #p::FieldInfo { field: #field_name, name: #name, shape: #p::FieldShape::Group(<#ty as #p::Params>::FIELDS) }
                 });
-                if g.overrides.is_empty() {
+                if g.skip {
+                    defaults.push(quote_spanned! {ty.span()=> #fid: <#ty as #p::Params>::defaults() });
+                } else if g.overrides.is_empty() {
                     describe.push(quote_spanned! {ty.span()=>
                         <#ty as #p::Params>::describe(&#p::join_path(prefix, #name), out);
                     });

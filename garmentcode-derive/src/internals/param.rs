@@ -58,6 +58,9 @@ pub struct Group {
     pub name: String,
     /// Per-instance overrides of the group's parameters.
     pub overrides: Vec<Override>,
+    /// `#[param(skip)]`: the whole group is left out of the schema (its values stay
+    /// reachable by path and at their defaults unless set).
+    pub skip: bool,
 }
 
 /// `#[param(field(default = .., range = .., prob = .., doc = "..", skip))]` on a nested
@@ -110,6 +113,7 @@ struct RawAttr {
     rename: Option<LitStr>,
     null_option: Option<(bool, Span)>,
     overrides: Vec<Override>,
+    skip: Option<Span>,
     seen: bool,
 }
 
@@ -194,6 +198,7 @@ fn parse_param_attr(attrs: &[syn::Attribute], errors: &mut Errors) -> RawAttr {
                 "default" => raw.default = Some(meta.value()?.parse()?),
                 "prob" => raw.prob = Some((meta.value()?.parse()?, span)),
                 "rename" => raw.rename = Some(meta.value()?.parse()?),
+                "skip" if !meta.input.peek(syn::token::Paren) => raw.skip = Some(span),
                 "null_option" => {
                     let b: syn::LitBool = meta.value()?.parse()?;
                     raw.null_option = Some((b.value, span));
@@ -212,7 +217,7 @@ fn parse_param_attr(attrs: &[syn::Attribute], errors: &mut Errors) -> RawAttr {
                 _ => {
                     return Err(meta.error(format!(
                         "unknown parameter attribute `{key}` (expected range, options, default, prob, rename, null_option, \
-                         or `field(..)` overrides on a nested group)"
+                         or, on a nested group, `skip` or `field(..)` overrides)"
                     )));
                 }
             }
@@ -298,8 +303,15 @@ pub fn parse_struct(input: &DeriveInput) -> Result<ParamStruct, syn::Error> {
                 }
                 seen.push(d);
             }
-            fields.push(Field::Group(Group { ident, ty: f.ty.clone(), name, overrides: raw.overrides }));
+            if let (Some(span), false) = (raw.skip, raw.overrides.is_empty()) {
+                errors.at(span, "a skipped group takes no `field(..)` overrides (it is left out of the schema whole)");
+            }
+            let skip = raw.skip.is_some();
+            fields.push(Field::Group(Group { ident, ty: f.ty.clone(), name, overrides: raw.overrides, skip }));
             continue;
+        }
+        if let Some(span) = raw.skip {
+            errors.at(span, "`skip` applies to nested groups; a parameter is described by its `default`, `range` and `prob`");
         }
         if let Some(o) = raw.overrides.first() {
             errors.at(o.path[0].span(), "`field(..)` overrides apply to nested groups, not to a parameter");
