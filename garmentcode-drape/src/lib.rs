@@ -31,6 +31,8 @@ mod par;
 mod parts;
 pub mod render;
 mod selfcol;
+#[cfg(test)]
+mod sheets;
 pub mod solver;
 mod strain;
 mod untangle;

@@ -675,46 +675,47 @@ impl SelfCollision {
 mod tests {
     use super::*;
 
-    /// Faces, positions, springs.
-    type Sheets = (Vec<[usize; 3]>, Vec<Vec3>, Vec<([usize; 2], f64)>);
+    use crate::sheets::two_sheets;
 
-    /// Two 12 × 12 cm sheets of 1 cm squares, one 0.2 cm above the other and shifted, gently waved.
-    fn sheets() -> Sheets {
-        let (mut faces, mut x, mut edges) = (Vec::new(), Vec::new(), Vec::new());
-        let side = 13;
-        for sheet in 0..2 {
-            let base = x.len();
-            for i in 0..side {
-                for j in 0..side {
-                    let (a, b) = (i as f64, j as f64);
-                    let offset = Vec3::new(0.5, 0.2, 0.3) * sheet as f64;
-                    x.push(offset + Vec3::new(a, 0.05 * (a * 0.7 + b * 1.3).sin(), b));
-                }
-            }
-            let id = |i: usize, j: usize| base + i * side + j;
-            for i in 0..side - 1 {
-                for j in 0..side - 1 {
-                    faces.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
-                    faces.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
-                }
-            }
+    /// Two 12 × 12 cm sheets of 1 cm squares, one 0.2 cm above the other and shifted, gently
+    /// waved, falling: both list tests' set-up.
+    struct Falling {
+        faces: Vec<[usize; 3]>,
+        x0: Vec<Vec3>,
+        edges: Vec<([usize; 2], f64)>,
+        v: Vec<Vec3>,
+        inv_mass: Vec<f64>,
+    }
+
+    const STEP: (Vec3, f64, f64) = (Vec3::new(0.0, -981.0, 0.0), 1.0 / 60.0, 0.1);
+
+    impl Falling {
+        fn new() -> Falling {
+            let (faces, x0, edges) = two_sheets(13, Vec3::new(0.5, 0.2, 0.3), |a, b| 0.05 * (a * 0.7 + b * 1.3).sin());
+            let n = x0.len();
+            Falling { faces, x0, edges, v: vec![Vec3::new(0.0, -1.0, 0.0); n], inv_mass: vec![10.0; n] }
         }
-        let mut keys = std::collections::BTreeSet::new();
-        for f in &faces {
-            for k in 0..3 {
-                keys.insert([f[k].min(f[(k + 1) % 3]), f[k].max(f[(k + 1) % 3])]);
-            }
+
+        /// Detection with the lists, kept from frame to frame, at `x`.
+        fn listed(&self, listed: &mut SelfCollision, x: &[Vec3]) {
+            listed.detect(x, &self.v, &self.inv_mass, &self.edges, STEP, true, 2);
         }
-        edges.extend(keys.into_iter().map(|e| (e, 1.0)));
-        (faces, x, edges)
+
+        /// What the tree alone finds at `x` (no lists), with some contacts.
+        fn tree(&self, x: &[Vec3]) -> SelfCollision {
+            let mut tree = SelfCollision::new(self.faces.clone(), &self.x0);
+            tree.lists = false;
+            tree.detect(x, &self.v, &self.inv_mass, &self.edges, STEP, true, 1);
+            assert!(tree.near.is_none());
+            assert!(!tree.point_triangle.is_empty() && !tree.edge_edge.is_empty(), "some contacts");
+            tree
+        }
     }
 
     #[test]
     fn listed_faces_find_what_the_tree_finds() {
-        let (faces, x0, edges) = sheets();
-        let n = x0.len();
-        let (v, inv_mass) = (vec![Vec3::new(0.0, -1.0, 0.0); n], vec![10.0; n]);
-        let step = (Vec3::new(0.0, -981.0, 0.0), 1.0 / 60.0, 0.1);
+        let s = Falling::new();
+        let (faces, x0) = (&s.faces, &s.x0);
         // Frame by frame: lists for one frame, then small moves (lists kept), then a few
         // particles moving far (searched in the tree again, the others from the lists), then
         // too many (lists for one frame again).
@@ -727,10 +728,10 @@ mod tests {
                 })
                 .collect()
         };
-        let mut listed = SelfCollision::new(faces.clone(), &x0);
+        let mut listed = SelfCollision::new(faces.clone(), x0);
         for k in 0..5 {
             let x = frame(k);
-            listed.detect(&x, &v, &inv_mass, &edges, step, true, 2);
+            s.listed(&mut listed, &x);
             match k {
                 0 | 4 => assert!(listed.near.as_ref().is_some_and(|l| l.skin == ONCE)),
                 1 | 2 => assert!(listed.near.as_ref().is_some_and(|l| l.skin == SKIN && l.fast_faces.is_empty())),
@@ -741,11 +742,7 @@ mod tests {
                         .is_some_and(|l| l.skin == SKIN && !l.fast_faces.is_empty() && l.fast_faces.len() < faces.len() / 2)
                 ),
             }
-            let mut tree = SelfCollision::new(faces.clone(), &x0);
-            tree.lists = false;
-            tree.detect(&x, &v, &inv_mass, &edges, step, true, 1);
-            assert!(tree.near.is_none());
-            assert!(!tree.point_triangle.is_empty() && !tree.edge_edge.is_empty(), "frame {k}: some contacts");
+            let tree = s.tree(&x);
             assert_eq!(listed.point_triangle, tree.point_triangle, "frame {k}");
             assert_eq!(listed.edge_edge, tree.edge_edge, "frame {k}");
             assert_eq!(listed.crossings, tree.crossings, "frame {k}");
@@ -754,10 +751,8 @@ mod tests {
 
     #[test]
     fn contacts_are_searched_again_only_near_stirred_particles() {
-        let (faces, x0, edges) = sheets();
-        let n = x0.len();
-        let (v, inv_mass) = (vec![Vec3::new(0.0, -1.0, 0.0); n], vec![10.0; n]);
-        let step = (Vec3::new(0.0, -981.0, 0.0), 1.0 / 60.0, 0.1);
+        let s = Falling::new();
+        let (faces, x0, edges) = (&s.faces, &s.x0, &s.edges);
         // Frame 0 lists the faces for one frame, frame 1 with the margin; from frame 2 on a few
         // particles jump by 0.09 cm (less than MOVED: still searched from the lists) or, from
         // frame 3, by 0.3 cm (searched in the tree), and particle 0, a corner, creeps by
@@ -776,13 +771,11 @@ mod tests {
                 })
                 .collect()
         };
-        let mut listed = SelfCollision::new(faces.clone(), &x0);
+        let mut listed = SelfCollision::new(faces.clone(), x0);
         for k in 0..6 {
             let x = frame(k);
-            listed.detect(&x, &v, &inv_mass, &edges, step, true, 2);
-            let mut tree = SelfCollision::new(faces.clone(), &x0);
-            tree.lists = false;
-            tree.detect(&x, &v, &inv_mass, &edges, step, true, 1);
+            s.listed(&mut listed, &x);
+            let tree = s.tree(&x);
             let (searched, _) = listed.searched;
             if k >= 2 {
                 assert!(0 < searched && searched < edges.len() / 2, "frame {k}: {searched} of {} springs searched", edges.len());
@@ -791,7 +784,6 @@ mod tests {
             } else {
                 assert_eq!(searched, edges.len(), "frame {k}");
             }
-            assert!(!tree.point_triangle.is_empty() && !tree.edge_edge.is_empty(), "frame {k}: some contacts");
             assert_eq!(listed.point_triangle, tree.point_triangle, "frame {k}");
             assert_eq!(listed.crossings, tree.crossings, "frame {k}");
             // The same pairs; the directions kept from an earlier frame for the creeping corner's.
