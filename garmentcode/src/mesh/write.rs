@@ -782,10 +782,9 @@ mod tests {
     fn the_texture_decodes_to_the_painted_pixels() {
         const N: usize = 64;
         let mut rgb = blank_image(N);
-        for (i, corners) in [[(3.2, 4.1), (40.5, 9.0), (20.0, 50.7)], [(50.0, 50.0), (63.9, 60.2), (45.1, 63.5)], [(0.0, 0.0), (2.0, 0.5), (1.0, 3.0)]]
-            .into_iter()
-            .enumerate()
-        {
+        let triangles =
+            [[(3.2, 4.1), (40.5, 9.0), (20.0, 50.7)], [(50.0, 50.0), (63.9, 60.2), (45.1, 63.5)], [(0.0, 0.0), (2.0, 0.5), (1.0, 3.0)]];
+        for (i, corners) in triangles.into_iter().enumerate() {
             let colour = [0xd8, 0xc8 - i as u8, 0xb0];
             fill_triangle(&mut rgb, N, corners.map(|(x, y)| Vec2::new(x, y)), colour);
         }
@@ -793,7 +792,10 @@ mod tests {
         let mut reader = png::Decoder::new(std::io::Cursor::new(&png)).read_info().expect("a PNG");
         let mut pixels = vec![0; reader.output_buffer_size().expect("a small image")];
         let info = reader.next_frame(&mut pixels).expect("one frame");
-        assert_eq!((info.width, info.height, info.color_type, info.bit_depth), (N as u32, N as u32, png::ColorType::Rgb, png::BitDepth::Eight));
+        assert_eq!(
+            (info.width, info.height, info.color_type, info.bit_depth),
+            (N as u32, N as u32, png::ColorType::Rgb, png::BitDepth::Eight)
+        );
         assert_eq!(pixels[..info.buffer_size()], rgb[..3 * N * N]);
     }
 
