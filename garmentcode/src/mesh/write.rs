@@ -261,16 +261,7 @@ impl<'a> MeshFiles<'a> {
             let corners = f.uvs.map(|t| Vec2::new(uvs[t].x * scale, (1.0 - uvs[t].y) * scale));
             fill_triangle(&mut rgb, n, corners, FABRIC);
         }
-        let mut out = Vec::new();
-        let mut enc = png::Encoder::new(&mut out, n as u32, n as u32);
-        enc.set_color(png::ColorType::Rgb);
-        enc.set_depth(png::BitDepth::Eight);
-        enc.set_compression(png::Compression::Fast);
-        // Writing into memory cannot fail for an image of the size declared.
-        let mut writer = enc.write_header().expect("PNG header in memory");
-        writer.write_image_data(&rgb[..3 * n * n]).expect("PNG data in memory");
-        writer.finish().expect("PNG end in memory");
-        out
+        encode_texture(&rgb, n)
     }
 
     fn material(&self, text: &mut Chunked) {
@@ -433,6 +424,23 @@ impl<'a> MeshFiles<'a> {
         }
         Ok(())
     }
+}
+
+/// The PNG of the `n`×`n` RGB image `rgb` (from [`blank_image`]).
+fn encode_texture(rgb: &[u8], n: usize) -> Vec<u8> {
+    let mut out = Vec::new();
+    let mut enc = png::Encoder::new(&mut out, n as u32, n as u32);
+    enc.set_color(png::ColorType::Rgb);
+    enc.set_depth(png::BitDepth::Eight);
+    // fdeflate's fast compressor after the "up" filter on every row: the texture's rows
+    // mostly repeat the row above, so each filters to zeros in one pass (the adaptive
+    // filter tried all five on every row).
+    enc.set_compression(png::Compression::Fastest);
+    // Writing into memory cannot fail for an image of the size declared.
+    let mut writer = enc.write_header().expect("PNG header in memory");
+    writer.write_image_data(&rgb[..3 * n * n]).expect("PNG data in memory");
+    writer.finish().expect("PNG end in memory");
+    out
 }
 
 /// Pixels of a row [`fill_triangle`] tests together.
@@ -767,6 +775,28 @@ mod tests {
             fill_triangle(&mut painted, N, corners, COLOUR);
             assert_eq!(painted, before);
         }
+    }
+
+    /// The texture's PNG decodes to the image painted, pixel for pixel.
+    #[test]
+    fn the_texture_decodes_to_the_painted_pixels() {
+        const N: usize = 64;
+        let mut rgb = blank_image(N);
+        let triangles =
+            [[(3.2, 4.1), (40.5, 9.0), (20.0, 50.7)], [(50.0, 50.0), (63.9, 60.2), (45.1, 63.5)], [(0.0, 0.0), (2.0, 0.5), (1.0, 3.0)]];
+        for (i, corners) in triangles.into_iter().enumerate() {
+            let colour = [0xd8, 0xc8 - i as u8, 0xb0];
+            fill_triangle(&mut rgb, N, corners.map(|(x, y)| Vec2::new(x, y)), colour);
+        }
+        let png = encode_texture(&rgb, N);
+        let mut reader = png::Decoder::new(std::io::Cursor::new(&png)).read_info().expect("a PNG");
+        let mut pixels = vec![0; reader.output_buffer_size().expect("a small image")];
+        let info = reader.next_frame(&mut pixels).expect("one frame");
+        assert_eq!(
+            (info.width, info.height, info.color_type, info.bit_depth),
+            (N as u32, N as u32, png::ColorType::Rgb, png::BitDepth::Eight)
+        );
+        assert_eq!(pixels[..info.buffer_size()], rgb[..3 * N * N]);
     }
 
     /// The texture's pixel bounds are the floor and ceiling of the triangle's bounds,
