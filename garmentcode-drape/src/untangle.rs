@@ -15,8 +15,8 @@
 //! border), the end nearer the plane is taken: it has just come through. The end stays the
 //! wrong one for as long as its edge crosses the garment, whichever face it crosses first.
 //! Edges that cross from the start (the box mesh's stretched seam faces, which the seams'
-//! closing undoes) are left alone for the first [`START_FRAMES`] frames, then, once at most
-//! [`FEW`] edges cross, undone from their end nearer the face.
+//! closing undoes) are left alone for the first [`START_FRAMES`] frames, then undone from
+//! their end nearer the face.
 
 use std::collections::BTreeMap;
 
@@ -48,14 +48,6 @@ pub(crate) struct Untangle {
 /// those left after that are undone from their end nearer the crossed face.
 const START_FRAMES: usize = 120;
 
-/// Crossings present from the start are undone (after [`START_FRAMES`]) only in a frame
-/// with at most this many crossing edges: then they are the few stragglers the seams left
-/// (a turtleneck's 4 of 48). With more, the start was tangled (a doubled cuff placed
-/// through itself), the nearer end is often the wrong one, and pulling it pushed the layers
-/// further through each other (a shirt that ended with 52 crossing edges without the rule
-/// ended with 313 with it).
-const FEW: usize = 30;
-
 /// With more crossing edges than this (the reference's limit for a drape to count, 300), the
 /// garment is tangled: pulling single ends back then pushes them through the layers around
 /// them and the crossings grow (a shirt whose box mesh starts with 793 had 2,347 at frame 600
@@ -80,7 +72,6 @@ impl Untangle {
     ) {
         let mut wrong = BTreeMap::new();
         self.pulls.clear();
-        let stragglers = self.frames >= START_FRAMES && crossings.len() <= FEW;
         let tri = |pos: &[Vec3], f: usize| faces[f].map(|i| pos[i]);
         for &(k, l, face) in crossings {
             if !undo(k, l, face) {
@@ -90,9 +81,8 @@ impl Untangle {
             let (dk, dl) = (side_of(x[k], &tri(x, face)), side_of(x[l], &tri(x, face)));
             let nearer = if dk.abs() < dl.abs() { k } else { l };
             let end = match self.wrong.get(&key) {
-                // Crossing from the start, one of the few left after the seams had time to
-                // close.
-                Some(None) if stragglers => Some(nearer),
+                // Crossing from the start, still after the seams had time to close.
+                Some(None) if self.frames >= START_FRAMES => Some(nearer),
                 Some(&end) => end,
                 // A new crossing: the end that changed sides of the face since the last frame
                 // (else, when the edge was beside the face, the nearer end: it has just come
@@ -247,7 +237,7 @@ mod tests {
     }
 
     #[test]
-    fn crossings_present_from_the_start_are_left_to_the_seams_until_few_remain() {
+    fn crossings_present_from_the_start_are_left_to_the_seams_for_a_while() {
         let (faces, x0, edges) = sheets();
         let tip = 81 + 4 * 9 + 4;
         let mut start = x0.clone();
@@ -257,17 +247,17 @@ mod tests {
         let mut sc = SelfCollision::new(faces.clone(), &start);
         let mut pulls = Untangle::default();
         sc.detect(&start, &v, &inv_mass, &edges, (Vec3::ZERO, 1.0 / 60.0, 0.1), false, 1);
-        assert!(!sc.crossings.is_empty() && sc.crossings.len() <= FEW);
-        for frame in 0..START_FRAMES {
+        assert!(!sc.crossings.is_empty());
+        for frame in 0..=START_FRAMES {
             pulls.update(&start, &faces, &sc.crossings, |_, _, _| true);
-            assert_eq!(pulls.pulled(), 0, "frame {frame}: no side is known for a crossing without a frame before it");
+            if frame < START_FRAMES {
+                assert_eq!(pulls.pulled(), 0, "frame {frame}: no side is known for a crossing without a frame before it");
+            }
         }
-        // Then not while more than a few edges cross (nor while the garment is tangled).
-        for n in [FEW + 1, TANGLED + 1] {
-            let many: Vec<(usize, usize, usize)> = sc.crossings.iter().cycle().take(n).copied().collect();
-            pulls.update(&start, &faces, &many, |_, _, _| true);
-            assert_eq!(pulls.pulled(), 0, "{n} crossing edges");
-        }
+        // Not while the garment is tangled.
+        let many: Vec<(usize, usize, usize)> = sc.crossings.iter().cycle().take(TANGLED + 1).copied().collect();
+        pulls.update(&start, &faces, &many, |_, _, _| true);
+        assert_eq!(pulls.pulled(), 0);
         pulls.update(&start, &faces, &sc.crossings, |_, _, _| true);
         // Then from the end nearer the crossed face: the tip, 0.6 cm below it.
         assert_eq!(pulls.pulled(), sc.crossings.len());
@@ -277,11 +267,5 @@ mod tests {
         };
         let tips: Vec<&Pull> = pulls.pulls.iter().filter(|p| p.particle == tip).collect();
         assert!(tips.len() >= 4 && tips.iter().all(|p| up(p)), "the tip is pulled back up: {:?}", pulls.pulls);
-        // A crossing that starts during the drape is undone among many.
-        let mut pulls = Untangle::default();
-        pulls.update(&x0, &faces, &[], |_, _, _| true);
-        let many: Vec<(usize, usize, usize)> = sc.crossings.iter().cycle().take(FEW + 1).copied().collect();
-        pulls.update(&start, &faces, &many, |_, _, _| true);
-        assert_eq!(pulls.pulled(), FEW + 1);
     }
 }
