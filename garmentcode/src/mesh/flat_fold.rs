@@ -33,9 +33,12 @@ impl Fold {
     }
 }
 
-/// Barycentric coordinates of `p` in triangle `t`.
+/// Barycentric coordinates of `p` in triangle `t` (outside, for a triangle of no area).
 fn barycentric(t: [Vec2; 3], p: Vec2) -> [f64; 3] {
     let area = (t[1] - t[0]).perp_dot(t[2] - t[0]);
+    if area == 0.0 {
+        return [f64::NEG_INFINITY; 3];
+    }
     let b1 = (p - t[0]).perp_dot(t[2] - t[0]) / area;
     let b2 = (t[1] - t[0]).perp_dot(p - t[0]) / area;
     [1.0 - b1 - b2, b1, b2]
@@ -91,4 +94,18 @@ pub(super) fn follow_seams(
         }
     }
     moved
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn barycentric_coordinates_place_a_point_and_refuse_a_flat_triangle() {
+        let t = [Vec2::new(0.0, 0.0), Vec2::new(2.0, 0.0), Vec2::new(0.0, 2.0)];
+        let b = barycentric(t, Vec2::new(0.5, 0.5));
+        assert!((b[0] - 0.5).abs() < 1e-12 && (b[1] - 0.25).abs() < 1e-12 && (b[2] - 0.25).abs() < 1e-12, "{b:?}");
+        let flat = [Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), Vec2::new(2.0, 0.0)];
+        assert!(barycentric(flat, Vec2::new(1.0, 0.0)).iter().all(|c| *c < -1.0));
+    }
 }
