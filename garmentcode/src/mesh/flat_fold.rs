@@ -10,9 +10,11 @@
 //! cancel in the mean: the inner layer's seam starts on the outer layer's.
 //!
 //! So, once the stitches are merged, a vertex of a part folded flat whose mirror image
-//! across the line lies in a face of the other part that touches a seam starts on that
-//! face as it lies in 3D (at the image), the gap behind it along the face's normal
-//! (ramping in from the line as in [`Fold`]). A merged vertex all of whose sides are
+//! across the line lies in a face of the other part that touches a seam, drawn by the seam
+//! towards the folded side, starts on that face as it lies in 3D (at the image), the gap
+//! behind it along the face's normal (ramping in from the line as in [`Fold`]). Where a
+//! seam draws the other part away from the folded side, the flat layer is behind it
+//! already and stays. A merged vertex all of whose sides are
 //! such vertices starts at their mean: behind both panels' seam faces, not between their
 //! gaps. The faces of the vertices so placed keep their 2D rest lengths (as faces
 //! touching a seam do), so only the start changes. Elsewhere the other part lies flat
@@ -80,11 +82,18 @@ pub(super) fn follow_seams(
                 .max_by(|a, b| inside(&a.1).total_cmp(&inside(&b.1)));
             let Some((f, b)) = best.filter(|(_, b)| inside(b) >= -1e-9) else { continue };
             let x = f.map(at);
+            let on = x[0] * b[0] + x[1] * b[1] + x[2] * b[2];
+            // Only where the seam drew the other part towards the folded side: turned away
+            // from it, the other part leaves the flat layer behind it.
+            let flat = panel.rotation * Vec3::new(image.x, image.y, 0.0) + panel.translation;
+            if (on - flat).dot(panel.to_3d(p) - flat) <= 0.0 {
+                continue;
+            }
             // Faces are wound like the outline, and the fold turns away from the side their
             // winding faces.
             let normal = (x[1] - x[0]).cross(x[2] - x[0]).normalize_or_zero();
             let gap = FOLD_GAP * (beyond / FOLD_GAP).min(1.0);
-            moved[pi].insert(l, x[0] * b[0] + x[1] * b[1] + x[2] * b[2] - normal * gap);
+            moved[pi].insert(l, on - normal * gap);
         }
     }
     for g in globals.iter_mut() {
