@@ -35,7 +35,8 @@
 //! a panel's holes' and inner lines' edges follow its outline's (sampled, stitched and
 //! numbered like them); holes bound the triangulation like the outline (left open),
 //! lines are constraints that bound nothing (rows of mesh edges); inner stitches follow
-//! the stitches; [`Fold`]s turn part of a panel when it is placed in 3D; a pleat's
+//! the stitches; [`Fold`]s turn part of a panel when it is placed in 3D (a part folded
+//! flat, once the stitches are merged, lies behind the other part's seams); a pleat's
 //! stitched pairs start on a ridge behind the panel, as deep as the pleat, not all at
 //! one point in its plane; the vertex labels name lines, holes and layers.
 //!
@@ -58,6 +59,7 @@
 //! areas), naming the resolution that fits: time and memory are bounded.
 
 mod curve;
+mod flat_fold;
 mod pleat;
 mod triangulate;
 
@@ -270,7 +272,7 @@ impl Fold {
 
     /// `q` (the panel-local 3D image of the 2D point `p`) turned if `p` lies right of the line.
     fn turn(&self, p: Vec2, q: Vec3) -> Vec3 {
-        let beyond = -self.direction.perp_dot(p - self.at);
+        let beyond = self.beyond(p);
         if beyond <= 0.0 {
             return q;
         }
@@ -637,6 +639,7 @@ impl BoxMesh {
         }
 
         pleat::raise_ridges(&specs, &panels, &stitches, &loc_glob, &mut globals);
+        let folded = flat_fold::follow_seams(&panels, &loc_glob, &mut globals);
 
         // Assembly.
         let n_stitch_vertices = globals.len();
@@ -656,7 +659,7 @@ impl BoxMesh {
                 panel.global[l] = if l < panel.n_stitch_side { loc_glob[&(pi, l)] } else { l - panel.n_stitch_side + offset };
             }
             for l in panel.n_stitch_side..panel.points.len() {
-                vertices.push(panel.to_3d(panel.points[l]));
+                vertices.push(folded[pi].get(&l).copied().unwrap_or_else(|| panel.to_3d(panel.points[l])));
                 labels.push(VertexLabel::Panel(pi));
             }
             for (e, spec) in panel.edges.iter().zip(specs[pi].all_edges()) {
@@ -670,7 +673,7 @@ impl BoxMesh {
                 if g[0] == g[1] || g[1] == g[2] || g[0] == g[2] {
                     continue;
                 }
-                if f.iter().any(|&l| l < panel.n_stitch_side) {
+                if f.iter().any(|&l| l < panel.n_stitch_side || folded[pi].contains_key(&l)) {
                     lens.add_face(panel, *f, g);
                 }
                 faces.push(MeshFace { vertices: g, uvs: f.map(|l| l + panel.texture_offset), panel: pi });
