@@ -508,7 +508,7 @@ fn real_faults_are_named_errors() {
     assert!(matches!(BoxMesh::new(&bad, DEFAULT_RESOLUTION), Err(MeshError::MissingEdge { stitch: 0, edge: 99, .. })));
     assert!(matches!(BoxMesh::new(&pattern, 0.0), Err(MeshError::Resolution(_))));
     // Bounded memory: a resolution far too fine for the garment is refused before triangulating.
-    let started = std::time::Instant::now();
+    let started = cpu_time::ThreadTime::now();
     assert!(matches!(BoxMesh::new(&pattern, 0.001), Err(MeshError::TooLarge { .. })));
     assert!(started.elapsed().as_secs() < 5);
 }
@@ -548,9 +548,11 @@ fn hardening(name: &str) -> Pattern {
 #[test]
 fn a_far_control_point_meshes_in_bounded_time() {
     let pattern = hardening("spec-mesh-far-control-point.json");
-    let started = std::time::Instant::now();
+    // Bounded work, measured as this thread's CPU (wall time swings with the machine's
+    // load): 8–9 s in the test profile, a hang before the fix.
+    let started = cpu_time::ThreadTime::now();
     let mesh = BoxMesh::new(&pattern, DEFAULT_RESOLUTION).expect("meshes");
-    assert!(started.elapsed().as_secs() < 30, "meshed in {:?}", started.elapsed());
+    assert!(started.elapsed().as_secs() < 30, "meshed in {:?} of CPU", started.elapsed());
     assert!(mesh.vertices.len() > 500_000 && mesh.vertices.len() <= garmentcode::mesh::MAX_MESH_VERTICES, "{}", mesh.vertices.len());
     let bulge = &mesh.panels[0].edges[3];
     assert!(bulge.length > 35_000.0, "{}", bulge.length);
@@ -570,7 +572,7 @@ fn structural_errors_are_refused_before_any_work() {
         ("spec-two-vertex-panel.json", "empty_panel"),
     ] {
         let pattern = hardening(file);
-        let started = std::time::Instant::now();
+        let started = cpu_time::ThreadTime::now();
         match BoxMesh::new(&pattern, DEFAULT_RESOLUTION) {
             Err(MeshError::Structural(message)) => assert!(message.contains(kind), "{file}: {message}"),
             other => panic!("{file}: expected a structural error, got {:?}", other.map(|m| m.vertices.len())),
@@ -584,7 +586,7 @@ fn structural_errors_are_refused_before_any_work() {
 #[test]
 fn a_panel_at_the_coordinate_limit_is_refused_with_the_resolution_that_fits() {
     let pattern = hardening("spec-mesh-100m-panel.json");
-    let started = std::time::Instant::now();
+    let started = cpu_time::ThreadTime::now();
     let e = BoxMesh::new(&pattern, DEFAULT_RESOLUTION).expect_err("too large");
     assert!(started.elapsed().as_millis() < 500, "{:?}", started.elapsed());
     let MeshError::TooLarge { needed, coarser, .. } = e else { panic!("{e}") };
