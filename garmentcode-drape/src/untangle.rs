@@ -150,36 +150,19 @@ mod tests {
     use super::*;
     use crate::selfcol::SelfCollision;
 
-    /// Faces, positions, springs.
-    type Sheets = (Vec<[usize; 3]>, Vec<Vec3>, Vec<([usize; 2], f64)>);
-
     /// Two flat 8 × 8 cm sheets of 1 cm squares, 1 cm apart (y = 0 and y = 1, the upper one
     /// shifted by a fraction of a square), and the edges of their faces.
-    fn sheets() -> Sheets {
-        let (mut faces, mut x) = (Vec::new(), Vec::new());
-        let side = 9;
-        for sheet in 0..2 {
-            let base = x.len();
-            for i in 0..side {
-                for j in 0..side {
-                    x.push(Vec3::new(i as f64, 0.0, j as f64) + Vec3::new(0.3, 1.0, 0.2) * sheet as f64);
-                }
-            }
-            let id = |i: usize, j: usize| base + i * side + j;
-            for i in 0..side - 1 {
-                for j in 0..side - 1 {
-                    faces.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
-                    faces.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
-                }
-            }
-        }
-        let mut keys = std::collections::BTreeSet::new();
-        for f in &faces {
-            for k in 0..3 {
-                keys.insert([f[k].min(f[(k + 1) % 3]), f[k].max(f[(k + 1) % 3])]);
-            }
-        }
-        (faces, x, keys.into_iter().map(|e| (e, 1.0)).collect())
+    fn sheets() -> crate::sheets::Sheets {
+        crate::sheets::two_sheets(9, Vec3::new(0.3, 1.0, 0.2), |_, _| 0.0)
+    }
+
+    /// The upper sheet's middle point, and the sheets' positions with it pushed 0.6 cm
+    /// through the lower sheet (a tongue, as a fold poking through its neighbour).
+    fn tongue() -> (usize, Vec<Vec3>) {
+        let tip = 81 + 4 * 9 + 4;
+        let (_, mut x, _) = sheets();
+        x[tip].y = -0.6;
+        (tip, x)
     }
 
     /// Runs `frames` frames of a tiny solver on the sheets, which held positions `x0` the
@@ -224,11 +207,7 @@ mod tests {
     #[test]
     fn a_point_pushed_through_another_layer_is_pulled_back() {
         let (_, x0, _) = sheets();
-        // A point in the middle of the upper sheet pushed 0.6 cm through the lower one (a
-        // tongue, as a fold poking through its neighbour).
-        let tip = 81 + 4 * 9 + 4;
-        let mut start = x0.clone();
-        start[tip].y = -0.6;
+        let (tip, start) = tongue();
         let (left, _) = settle(&x0, &start, false, 20);
         assert!(left > 0, "without the pulls the tongue stays through the lower sheet");
         let (left, x) = settle(&x0, &start, true, 20);
@@ -239,9 +218,7 @@ mod tests {
     #[test]
     fn crossings_present_from_the_start_are_left_to_the_seams_for_a_while() {
         let (faces, x0, edges) = sheets();
-        let tip = 81 + 4 * 9 + 4;
-        let mut start = x0.clone();
-        start[tip].y = -0.6;
+        let (tip, start) = tongue();
         let inv_mass = vec![1.0; x0.len()];
         let v = vec![Vec3::ZERO; x0.len()];
         let mut sc = SelfCollision::new(faces.clone(), &start);
