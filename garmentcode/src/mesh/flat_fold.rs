@@ -46,6 +46,43 @@ fn barycentric(t: [Vec2; 3], p: Vec2) -> [f64; 3] {
     [1.0 - b1 - b2, b1, b2]
 }
 
+/// The seam faces by square cells of the panel's plane, as large as the largest face's
+/// box: a face holding a point overlaps the point's cell, so a point is looked up among a
+/// few faces, not all of them (time linear in the panel's vertices, whatever its size).
+struct FaceGrid {
+    cell: f64,
+    cells: HashMap<(i64, i64), Vec<usize>>,
+}
+
+impl FaceGrid {
+    fn new(faces: &[[usize; 3]], points: &[Vec2]) -> FaceGrid {
+        let boxes: Vec<(Vec2, Vec2)> = faces
+            .iter()
+            .map(|f| {
+                let p = f.map(|k| points[k]);
+                (p[0].min(p[1]).min(p[2]), p[0].max(p[1]).max(p[2]))
+            })
+            .collect();
+        let cell = boxes.iter().map(|(lo, hi)| (*hi - *lo).max_element()).fold(0.0, f64::max).max(1e-9);
+        let mut cells: HashMap<(i64, i64), Vec<usize>> = HashMap::default();
+        let key = |v: f64| (v / cell).floor() as i64;
+        for (i, (lo, hi)) in boxes.iter().enumerate() {
+            for x in key(lo.x)..=key(hi.x) {
+                for y in key(lo.y)..=key(hi.y) {
+                    cells.entry((x, y)).or_default().push(i);
+                }
+            }
+        }
+        FaceGrid { cell, cells }
+    }
+
+    /// The faces that may hold `p`, in the order they were given.
+    fn near(&self, p: Vec2) -> &[usize] {
+        let key = ((p.x / self.cell).floor() as i64, (p.y / self.cell).floor() as i64);
+        self.cells.get(&key).map_or(&[], Vec::as_slice)
+    }
+}
+
 /// Places the vertices of panels with one fold, of 180°, that follow the other part's
 /// seams (see the module documentation): moves the merged vertices in `globals`, and
 /// returns, per panel, the other local vertices moved and where to.
@@ -68,6 +105,7 @@ pub(super) fn follow_seams(
             .filter(|f| f.iter().any(|&l| stitched(l)) && f.iter().all(|&l| fold.beyond(panel.points[l]) <= 0.0))
             .copied()
             .collect();
+        let grid = FaceGrid::new(&seam_faces, &panel.points);
         let right = Vec2::new(fold.direction.y, -fold.direction.x);
         for (l, &p) in panel.points.iter().enumerate() {
             let beyond = fold.beyond(p);
@@ -76,8 +114,10 @@ pub(super) fn follow_seams(
             }
             let image = p - right * (2.0 * beyond);
             let inside = |b: &[f64; 3]| b.iter().copied().fold(f64::INFINITY, f64::min);
-            let best = seam_faces
+            let best = grid
+                .near(image)
                 .iter()
+                .map(|&i| &seam_faces[i])
                 .map(|f| (f, barycentric(f.map(|k| panel.points[k]), image)))
                 .max_by(|a, b| inside(&a.1).total_cmp(&inside(&b.1)));
             let Some((f, b)) = best.filter(|(_, b)| inside(b) >= -1e-9) else { continue };
@@ -116,5 +156,23 @@ mod tests {
         assert!((b[0] - 0.5).abs() < 1e-12 && (b[1] - 0.25).abs() < 1e-12 && (b[2] - 0.25).abs() < 1e-12, "{b:?}");
         let flat = [Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), Vec2::new(2.0, 0.0)];
         assert!(barycentric(flat, Vec2::new(1.0, 0.0)).iter().all(|c| *c < -1.0));
+    }
+
+    #[test]
+    fn the_grid_offers_every_face_that_holds_a_point() {
+        // A strip of 40 triangles of 1 × 1 cm (and one long thin one) over 20 cm.
+        let mut points: Vec<Vec2> = (0..21).flat_map(|i| [Vec2::new(i as f64, 0.0), Vec2::new(i as f64, 1.0)]).collect();
+        let mut faces: Vec<[usize; 3]> = (0..20).flat_map(|i| [[2 * i, 2 * i + 2, 2 * i + 3], [2 * i, 2 * i + 3, 2 * i + 1]]).collect();
+        points.extend([Vec2::new(0.0, 1.0), Vec2::new(20.0, 1.0), Vec2::new(10.0, 3.0)]);
+        faces.push([42, 43, 44]);
+        let grid = FaceGrid::new(&faces, &points);
+        for k in 0..400 {
+            let p = Vec2::new(0.05 * k as f64 + 0.013, 0.0075 * k as f64 % 3.0);
+            let holding: Vec<usize> =
+                (0..faces.len()).filter(|&i| barycentric(faces[i].map(|v| points[v]), p).iter().all(|c| *c >= -1e-9)).collect();
+            let near = grid.near(p);
+            assert!(holding.iter().all(|i| near.contains(i)), "{p:?}: {holding:?} not all in {near:?}");
+            assert!(near.windows(2).all(|w| w[0] < w[1]));
+        }
     }
 }
