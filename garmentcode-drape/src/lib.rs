@@ -38,6 +38,7 @@ mod strain;
 mod untangle;
 
 pub use body::{BodyError, BodyMesh};
+pub use check::crossing_edges;
 pub use fabric::{Fabric, FabricError};
 pub use glb::glb;
 pub use solver::{Attachment, Drape, DrapeError, Next, Progress, Settings, Stats, drape, drape_with_progress};

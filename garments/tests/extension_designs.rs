@@ -491,60 +491,24 @@ fn a_pencil_skirts_hip_ease_widens_its_front_and_back_by_the_ease() {
     }
 }
 
-/// The edges of the box mesh's faces that cross one of its triangles (sharing no vertex
-/// with it, strictly inside both, as the drape judge counts them), among the pairs where
-/// the edge's face or the triangle is on a panel `on` accepts.
+/// How many of the box mesh's edges cross one of its triangles (as the drape judge counts
+/// them, [`garmentcode_drape::crossing_edges`]), among those on a face of a panel `on`
+/// accepts or crossing such a face first.
 fn crossing_edges(mesh: &BoxMesh, on: impl Fn(&str) -> bool) -> usize {
-    use garmentcode::Vec3;
-    let x = &mesh.vertices;
-    let chosen = |f: &garmentcode::mesh::MeshFace| on(&mesh.panels[f.panel].name);
-    let mut edges: Vec<([usize; 2], bool)> = mesh
+    let chosen: Vec<bool> = mesh.faces.iter().map(|f| on(&mesh.panels[f.panel].name)).collect();
+    let on_chosen: std::collections::BTreeSet<[usize; 2]> = mesh
         .faces
         .iter()
-        .flat_map(|f| {
+        .zip(&chosen)
+        .filter(|(_, c)| **c)
+        .flat_map(|(f, _)| {
             let v = f.vertices;
-            (0..3).map(move |k| ([v[k].min(v[(k + 1) % 3]), v[k].max(v[(k + 1) % 3])], chosen(f)))
+            (0..3).map(move |k| [v[k].min(v[(k + 1) % 3]), v[k].max(v[(k + 1) % 3])])
         })
         .collect();
-    edges.sort();
-    // An edge counts as chosen if any of its faces is.
-    edges.dedup_by(|b, a| {
-        let same = a.0 == b.0;
-        a.1 |= same && b.1;
-        same
-    });
-    let bbox = |ps: &[Vec3]| (ps.iter().copied().fold(Vec3::INFINITY, Vec3::min), ps.iter().copied().fold(Vec3::NEG_INFINITY, Vec3::max));
-    let faces: Vec<([usize; 3], bool, (Vec3, Vec3))> =
-        mesh.faces.iter().map(|f| (f.vertices, chosen(f), bbox(&f.vertices.map(|i| x[i])))).collect();
-    let crosses = |[a, b]: [usize; 2], t: [usize; 3]| {
-        let (o, d) = (x[a], x[b] - x[a]);
-        let (e1, e2) = (x[t[1]] - x[t[0]], x[t[2]] - x[t[0]]);
-        let p = d.cross(e2);
-        let det = e1.dot(p);
-        if det.abs() <= 1e-12 {
-            return false;
-        }
-        let s = o - x[t[0]];
-        let u = s.dot(p) / det;
-        let q = s.cross(e1);
-        let v = d.dot(q) / det;
-        let w = e2.dot(q) / det;
-        let eps = 1e-6;
-        u > eps && v > eps && u + v < 1.0 - eps && w > eps && w < 1.0 - eps
-    };
-    edges
-        .iter()
-        .filter(|&&(e, edge_chosen)| {
-            let (lo, hi) = bbox(&[x[e[0]], x[e[1]]]);
-            faces.iter().any(|&(t, face_chosen, (tlo, thi))| {
-                (edge_chosen || face_chosen)
-                    && !t.contains(&e[0])
-                    && !t.contains(&e[1])
-                    && lo.cmple(thi).all()
-                    && tlo.cmple(hi).all()
-                    && crosses(e, t)
-            })
-        })
+    garmentcode_drape::crossing_edges(mesh, &mesh.vertices)
+        .into_iter()
+        .filter(|(edge, face)| chosen[*face] || on_chosen.contains(edge))
         .count()
 }
 
