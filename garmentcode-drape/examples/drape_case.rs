@@ -8,7 +8,8 @@
 //! `DRAPE_THREADS=N` runs on N threads (default: all; the positions do not depend on it).
 //!
 //! Experiments: `DRAPE_SELF_COLLISION=0` turns self-collision off; `DRAPE_UNTANGLE=0` leaves
-//! new crossings alone (as the reference does); `DRAPE_TRACE=K` writes the garment every K
+//! new crossings alone (as the reference does); `DRAPE_SETTLE=1` runs on after the release until
+//! the garment is static (`Settings::stop_at_release` off); `DRAPE_TRACE=K` writes the garment every K
 //! frames as `OUT_DIR/trace/FRAME_sim.obj` (to see where crossings start); `DRAPE_JITTER=CM`
 //! moves the interior vertices of every panel by up to CM in the panel's plane; `DRAPE_BOXMESH=CASE_DIR`
 //! drapes the reference's own box mesh of a case folder instead of ours (its
@@ -16,6 +17,10 @@
 //! lengths of `CASE_orig_lens.pickle` written as `i j length` lines to `OUT_DIR/orig_lens.txt`,
 //! e.g. with `python3 -c "import pickle,sys; [print(i, j, l) for (i, j), l in pickle.load(open(sys.argv[1], 'rb')).items()]"`);
 //! only `OUT_DIR/<case>_sim.obj` is written then (copy the case's other files next to it to judge).
+//! `DRAPE_STATS=FROM` prints a line per frame to stderr (frame index from 0, vertices moving more
+//! than the static threshold, max and mean speed in cm/s, mean y of `lower_interface`, body
+//! contacts: the columns of the reference's trace, see docs/drape.md) and writes the positions of
+//! frames `FROM` on as little-endian `f32` triples to `OUT_DIR/trace/ours_FRAME.f32`.
 
 use std::path::Path;
 
@@ -55,13 +60,44 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if std::env::var("DRAPE_SELF_COLLISION").is_ok_and(|v| v == "0") {
         settings.self_collision = false;
     }
+    if std::env::var("DRAPE_SETTLE").is_ok_and(|v| v == "1") {
+        settings.stop_at_release = false;
+    }
     if std::env::var("DRAPE_UNTANGLE").is_ok_and(|v| v == "0") {
         settings.untangle = false;
     }
     std::fs::create_dir_all(out)?;
     let trace: Option<usize> = std::env::var("DRAPE_TRACE").ok().and_then(|k| k.parse().ok()).filter(|&k| k > 0);
     let mut written = Ok(());
+    let stats_from: Option<usize> = std::env::var("DRAPE_STATS").ok().and_then(|k| k.parse().ok());
+    let lower: Vec<usize> = mesh.vertex_labels.iter().find(|(l, _)| l == "lower_interface").map(|(_, v)| v.clone()).unwrap_or_default();
+    let mut last = mesh.vertices.clone();
+    if stats_from.is_some() {
+        eprintln!("frame nonstatic maxspeed meanspeed lower_y contacts");
+    }
     let result = drape_with_progress(&mesh, &body, &settings, |progress| {
+        if let Some(from) = stats_from {
+            let frame = progress.frame - 1;
+            let speeds: Vec<f64> = progress.positions.iter().zip(&last).map(|(a, b)| (*a - *b).length() * settings.fps).collect();
+            let lower_y = lower.iter().map(|&i| progress.positions[i].y).sum::<f64>() / lower.len().max(1) as f64;
+            eprintln!(
+                "{frame} {} {:.4} {:.5} {lower_y:.4} {}",
+                progress.non_static_vertices,
+                speeds.iter().fold(0.0f64, |m, &s| m.max(s)),
+                speeds.iter().sum::<f64>() / speeds.len() as f64,
+                progress.body_contacts
+            );
+            last.copy_from_slice(progress.positions);
+            if frame >= from {
+                let bytes: Vec<u8> =
+                    progress.positions.iter().flat_map(|p| [p.x as f32, p.y as f32, p.z as f32]).flat_map(f32::to_le_bytes).collect();
+                let dir = out.join("trace");
+                written = written
+                    .clone()
+                    .and(std::fs::create_dir_all(&dir).map_err(|e| e.to_string()))
+                    .and(std::fs::write(dir.join(format!("ours_{frame:05}.f32")), bytes).map_err(|e| e.to_string()));
+            }
+        }
         if let Some(k) = trace
             && progress.frame % k == 0
         {

@@ -106,6 +106,15 @@ pub struct Settings {
     pub static_threshold: f64,
     /// The garment is static when at most this share (%) of vertices move (1.5).
     pub non_static_percent: f64,
+    /// With attachments, stop the run at the first frame the static rule may run (5 frames
+    /// after the attachments are released, frame `attachment_frames + 5`), static or not, as
+    /// every reference drape run on CPU stops: there the reference's static check compares a
+    /// frame's positions with themselves (Warp's `numpy()` of a CPU array is a view of the
+    /// state, the same buffer every frame) and always finds the garment static. Its physics,
+    /// run on, lets skirts slide down the hips as ours does (docs/drape.md, "Seventh
+    /// session"). Off: only the static rule and the frame limit stop the run, as on a GPU. On
+    /// by default.
+    pub stop_at_release: bool,
     /// Pull particles found inside the body back onto its surface (`enable_cloth_reference_drag`).
     pub body_drag: bool,
     /// Particles farther than this (plus their radius) outside their body part while their
@@ -153,6 +162,7 @@ impl Default for Settings {
             attachment_frames: 400,
             static_threshold: 0.03,
             non_static_percent: 1.5,
+            stop_at_release: true,
             body_drag: true,
             self_collision: true,
             untangle: true,
@@ -307,7 +317,9 @@ pub struct Stats {
     pub frames: usize,
     /// Wall-clock seconds of the simulation (set-up included).
     pub seconds: f64,
-    /// The garment came to rest (the static rule stopped the run before the frame limit).
+    /// The run stopped by its rule before the frame limit: the garment came to rest (the
+    /// static rule), or the attachments had been released for 5 frames (see
+    /// [`Settings::stop_at_release`]; [`Stats::non_static_vertices`] says how much still moved).
     pub converged: bool,
     /// Vertices that moved more than the static threshold (L1, cm) in the last frame.
     pub non_static_vertices: usize,
@@ -462,6 +474,8 @@ pub struct Progress<'a> {
     pub max_frames: usize,
     /// Vertices that moved more than the static threshold in this frame.
     pub non_static_vertices: usize,
+    /// Body contacts found at the start of this frame (particles in the contact band).
+    pub body_contacts: usize,
     /// The garment's vertex positions after this frame (cm, box-mesh order).
     pub positions: &'a [Vec3],
 }
@@ -499,6 +513,7 @@ pub fn drape_with_progress(
     let mu = 0.5 * (settings.fabric_friction + settings.body_friction);
     let r = settings.particle_radius;
     let min_frames = if cloth.attachments.is_empty() { 0 } else { settings.attachment_frames + 5 };
+    let stop_at_release = settings.stop_at_release && !cloth.attachments.is_empty();
 
     let mut x = mesh.vertices.clone();
     let mut v = vec![Vec3::ZERO; n];
@@ -702,11 +717,17 @@ pub fn drape_with_progress(
         non_static = x.iter().zip(&prev).filter(|(a, b)| (**a - **b).abs().element_sum() > settings.static_threshold).count();
         let is_static = non_static == 0 || (non_static as f64) < settings.non_static_percent / 100.0 * n as f64;
         // The static rule runs after the zero-gravity frames and the attachment frames.
-        if frame >= settings.zero_gravity_frames && frame >= min_frames && is_static {
+        if frame >= settings.zero_gravity_frames && frame >= min_frames && (is_static || stop_at_release) {
             converged = true;
             break;
         }
-        let progress = Progress { frame: frames, max_frames: settings.max_frames, non_static_vertices: non_static, positions: &x };
+        let progress = Progress {
+            frame: frames,
+            max_frames: settings.max_frames,
+            non_static_vertices: non_static,
+            body_contacts: contacts.len(),
+            positions: &x,
+        };
         if on_frame(&progress) == Next::Stop {
             break;
         }

@@ -1122,7 +1122,9 @@ impl PyDrape {
     }
 
     /// Figures of the run: `frames`, `seconds`, `converged` (came to rest before the
-    /// frame limit), `non_static_vertices`, `body_penetrations`, `self_intersections`.
+    /// frame limit, or, held by attachments, reached the frame 5 after their release, where
+    /// the reference's drapes stop), `non_static_vertices`, `body_penetrations`,
+    /// `self_intersections`.
     #[getter]
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let s = &self.result.stats;
