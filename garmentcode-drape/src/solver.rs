@@ -321,6 +321,10 @@ pub struct Stats {
     /// static rule), or the attachments had been released for 5 frames (see
     /// [`Settings::stop_at_release`]; [`Stats::non_static_vertices`] says how much still moved).
     pub converged: bool,
+    /// The garment was at rest in its last frame by the static rule (at most
+    /// [`Settings::non_static_percent`] of its vertices moved more than the threshold):
+    /// false where the run stopped at the release while still moving, or at a limit.
+    pub at_rest: bool,
     /// Vertices that moved more than the static threshold (L1, cm) in the last frame.
     pub non_static_vertices: usize,
     /// Spring edges crossing the body surface (the reference's `body_collisions`).
@@ -543,7 +547,7 @@ pub fn drape_with_progress(
     let mut self_collision = (settings.self_collision || (parts.is_some() && settings.body_drag))
         .then(|| SelfCollision::new(mesh.faces.iter().map(|f| f.vertices).collect(), &x));
     let mut untangle = Untangle::default();
-    let (mut frames, mut converged, mut non_static) = (0, false, 0);
+    let (mut frames, mut converged, mut non_static, mut at_rest) = (0, false, 0, false);
 
     for frame in 0..settings.max_frames {
         let g = if frame >= settings.zero_gravity_frames { Vec3::new(0.0, -settings.gravity, 0.0) } else { Vec3::ZERO };
@@ -715,9 +719,9 @@ pub fn drape_with_progress(
         }
         frames = frame + 1;
         non_static = x.iter().zip(&prev).filter(|(a, b)| (**a - **b).abs().element_sum() > settings.static_threshold).count();
-        let is_static = non_static == 0 || (non_static as f64) < settings.non_static_percent / 100.0 * n as f64;
+        at_rest = non_static == 0 || (non_static as f64) < settings.non_static_percent / 100.0 * n as f64;
         // The static rule runs after the zero-gravity frames and the attachment frames.
-        if frame >= settings.zero_gravity_frames && frame >= min_frames && (is_static || stop_at_release) {
+        if frame >= settings.zero_gravity_frames && frame >= min_frames && (at_rest || stop_at_release) {
             converged = true;
             break;
         }
@@ -740,6 +744,7 @@ pub fn drape_with_progress(
             frames,
             seconds: start.elapsed().as_secs_f64(),
             converged,
+            at_rest,
             non_static_vertices: non_static,
             body_penetrations,
             self_intersections,

@@ -1123,8 +1123,8 @@ impl PyDrape {
 
     /// Figures of the run: `frames`, `seconds`, `converged` (came to rest before the
     /// frame limit, or, held by attachments, reached the frame 5 after their release, where
-    /// the reference's drapes stop), `non_static_vertices`, `body_penetrations`,
-    /// `self_intersections`.
+    /// the reference's drapes stop), `at_rest` (at most 1.5 % of the vertices moved in the
+    /// last frame), `non_static_vertices`, `body_penetrations`, `self_intersections`.
     #[getter]
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let s = &self.result.stats;
@@ -1132,6 +1132,7 @@ impl PyDrape {
         d.set_item("frames", s.frames)?;
         d.set_item("seconds", s.seconds)?;
         d.set_item("converged", s.converged)?;
+        d.set_item("at_rest", s.at_rest)?;
         d.set_item("non_static_vertices", s.non_static_vertices)?;
         d.set_item("body_penetrations", s.body_penetrations)?;
         d.set_item("self_intersections", s.self_intersections)?;

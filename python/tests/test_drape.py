@@ -29,7 +29,7 @@ def test_a_skirt_drapes_into_numpy_arrays(skirt):
     assert not np.array_equal(d.positions, mesh.vertices), "the garment moved"
     assert np.abs(d.positions - mesh.vertices).max() < 20.0, "five frames move it a little"
     assert d.stats["frames"] == 5 and d.stats["converged"] is False
-    assert set(d.stats) == {"frames", "seconds", "converged", "non_static_vertices", "body_penetrations", "self_intersections"}
+    assert set(d.stats) == {"frames", "seconds", "converged", "at_rest", "non_static_vertices", "body_penetrations", "self_intersections"}
     assert np.array_equal(d.mesh.vertices, mesh.vertices)
     obj = d.obj()
     assert obj.count("\nv ") + obj.startswith("v ") == n

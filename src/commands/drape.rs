@@ -137,6 +137,7 @@ fn report_json(mesh: &BoxMesh, x: &[garmentcode::Vec3], stats: &Stats, fails: &[
     let v = json!({
         "name": mesh.file_prefix(),
         "converged": stats.converged,
+        "at_rest": stats.at_rest,
         "fails": fails,
         "frames": stats.frames,
         "seconds": (stats.seconds * 1000.0).round() / 1000.0,
@@ -325,7 +326,14 @@ pub fn run(args: DrapeArgs) -> Result<i32, CliError> {
         mesh.vertices.len(),
         s.frames,
         s.seconds,
-        if s.converged { "settled" } else { "did not settle" },
+        match (s.converged, s.at_rest) {
+            (true, true) => "settled".to_string(),
+            (true, false) => format!(
+                "stopped 5 frames after the release as the reference's drapes stop, {} vertices still moving",
+                s.non_static_vertices
+            ),
+            (false, _) => "did not settle".to_string(),
+        },
         s.body_penetrations,
         s.self_intersections
     );

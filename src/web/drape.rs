@@ -262,6 +262,7 @@ pub fn status(id: &str) -> Result<String, ApiError> {
             "frames": st.frames,
             "seconds": st.seconds,
             "converged": st.converged,
+            "at_rest": st.at_rest,
             "non_static_vertices": st.non_static_vertices,
             "body_penetrations": st.body_penetrations,
             "self_intersections": st.self_intersections,
