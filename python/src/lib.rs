@@ -874,7 +874,7 @@ impl PyPattern {
         let mesh_file = body_mesh.map(path_or_str).transpose()?;
         let pattern = &self.pattern;
         let (mesh, result) = py.detach(|| {
-            let mesh = BoxMesh::for_drape(pattern, resolution)
+            let mesh = BoxMesh::new(pattern, resolution)
                 .map_err(|e| PatternError::new_err(format!("{}: cannot mesh the pattern: {e}", pattern.name)))?;
             let collider = match &mesh_file {
                 Some(f) => garmentcode_drape::BodyMesh::load(f.as_ref()),

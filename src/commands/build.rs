@@ -68,7 +68,7 @@ fn add_drape(
     let fail = |e: String| CliError::Input(format!("{}: {e}", pattern.name));
     let fabric = load_fabric(&args.sim.fabric)?;
     let (body_mesh, source) = load_body_mesh(args.body_mesh.as_deref(), body.1, body.0)?;
-    let mesh = BoxMesh::for_drape(pattern, args.mesh_resolution).map_err(|e| fail(format!("cannot mesh the pattern: {e}")))?;
+    let mesh = BoxMesh::new(pattern, args.mesh_resolution).map_err(|e| fail(format!("cannot mesh the pattern: {e}")))?;
     let setup = DrapeSetup {
         body: &body_mesh,
         body_source: &source,

@@ -289,8 +289,8 @@ pub fn run(args: DrapeArgs) -> Result<i32, CliError> {
         return Err(CliError::Usage(format!("--name: '{}' is not a file name prefix", pattern.name)));
     }
     let (body, body_source) = load_body_mesh(args.body_mesh.as_deref(), &body_label, &measurements)?;
-    let mesh = BoxMesh::for_drape(&pattern, args.resolution)
-        .map_err(|e| CliError::Input(format!("{}: cannot mesh the pattern: {e}", args.garment)))?;
+    let mesh =
+        BoxMesh::new(&pattern, args.resolution).map_err(|e| CliError::Input(format!("{}: cannot mesh the pattern: {e}", args.garment)))?;
     let setup = DrapeSetup {
         body: &body,
         body_source: &body_source,

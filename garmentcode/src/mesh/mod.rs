@@ -60,7 +60,6 @@
 
 mod curve;
 mod flat_fold;
-mod layers;
 mod pleat;
 mod triangulate;
 
@@ -376,22 +375,8 @@ struct GlobalStitch {
 }
 
 impl BoxMesh {
-    /// The box mesh of `pattern` at `resolution` cm (see [`DEFAULT_RESOLUTION`]), the
-    /// reference's: every panel where the pattern places it.
+    /// The box mesh of `pattern` at `resolution` cm (see [`DEFAULT_RESOLUTION`]).
     pub fn new(pattern: &Pattern, resolution: f64) -> Result<BoxMesh, MeshError> {
-        BoxMesh::build(pattern, resolution, false)
-    }
-
-    /// The box mesh a drape starts from: [`new`](Self::new)'s, except that panels the
-    /// pattern places over each other in one plane (the levels of a tiered circle skirt)
-    /// are turned and shifted in it so that each continues the panel it is sewn to (see
-    /// `layers.rs`). The same vertices, faces, labels and rest lengths; for a pattern
-    /// without such panels, the same mesh.
-    pub fn for_drape(pattern: &Pattern, resolution: f64) -> Result<BoxMesh, MeshError> {
-        BoxMesh::build(pattern, resolution, true)
-    }
-
-    fn build(pattern: &Pattern, resolution: f64, layers_apart: bool) -> Result<BoxMesh, MeshError> {
         if !(resolution.is_finite() && resolution > 0.0) {
             return Err(MeshError::Resolution(resolution));
         }
@@ -593,11 +578,6 @@ impl BoxMesh {
                 folds: Fold::of(p),
             });
             texture_offset += n_local;
-        }
-
-        if layers_apart {
-            let n_outline: Vec<usize> = specs.iter().map(|p| p.edges.len()).collect();
-            layers::separate(&mut panels, &n_outline, &stitches);
         }
 
         // Stitch vertices.

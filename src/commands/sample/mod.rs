@@ -634,8 +634,7 @@ fn replay(sampler: &DatasetSampler, opts: &Options, index: u64, attempt: Option<
                     .map_err(|e| CliError::Failed(e.to_string()))?;
             }
             if opts.formats.mesh || opts.formats.drape {
-                let make = if opts.formats.drape { garmentcode::mesh::BoxMesh::for_drape } else { garmentcode::mesh::BoxMesh::new };
-                let mesh = make(&built.pattern, garmentcode::mesh::DEFAULT_RESOLUTION)
+                let mesh = garmentcode::mesh::BoxMesh::new(&built.pattern, garmentcode::mesh::DEFAULT_RESOLUTION)
                     .map_err(|e| CliError::Failed(format!("{name}: cannot mesh the pattern: {e}")))?;
                 if opts.formats.drape {
                     let fails = replay_drape(

@@ -289,8 +289,7 @@ fn files_of(s: &Settings, sample: &Sample, record: &mut Record) -> Result<Files,
         files.push((format!("{name}_pattern.png"), garmentcode::draw::to_png(pattern, &opts).map_err(|e| fail("PNG drawing", e))?));
     }
     if s.formats.mesh || s.formats.drape {
-        let make = if s.formats.drape { garmentcode::mesh::BoxMesh::for_drape } else { garmentcode::mesh::BoxMesh::new };
-        let mesh = make(pattern, garmentcode::mesh::DEFAULT_RESOLUTION);
+        let mesh = garmentcode::mesh::BoxMesh::new(pattern, garmentcode::mesh::DEFAULT_RESOLUTION);
         match (mesh, &s.drape) {
             (Ok(mesh), drape) => {
                 let mesh = garmentcode::mesh::BoxMesh { name: name.clone(), ..mesh };
