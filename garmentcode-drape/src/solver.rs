@@ -112,8 +112,11 @@ pub struct Settings {
     /// frame's positions with themselves (Warp's `numpy()` of a CPU array is a view of the
     /// state, the same buffer every frame) and always finds the garment static. Its physics,
     /// run on, lets skirts slide down the hips as ours does (docs/drape.md, "Seventh
-    /// session"). Off: only the static rule and the frame limit stop the run, as on a GPU. On
-    /// by default.
+    /// session"). One exception, beyond the reference: while edges still cross the garment
+    /// (with self-collision on, found at the frame's start) the run goes on, so that the
+    /// `untangle` rule can undo them, and stops at the first frame without one (or at rest,
+    /// or at a limit). Off: only the static rule and the frame limit stop the run, as on a
+    /// GPU. On by default.
     pub stop_at_release: bool,
     /// Pull particles found inside the body back onto its surface (`enable_cloth_reference_drag`).
     pub body_drag: bool,
@@ -721,7 +724,8 @@ pub fn drape_with_progress(
         non_static = x.iter().zip(&prev).filter(|(a, b)| (**a - **b).abs().element_sum() > settings.static_threshold).count();
         at_rest = non_static == 0 || (non_static as f64) < settings.non_static_percent / 100.0 * n as f64;
         // The static rule runs after the zero-gravity frames and the attachment frames.
-        if frame >= settings.zero_gravity_frames && frame >= min_frames && (at_rest || stop_at_release) {
+        let untangled = self_collision.as_ref().is_none_or(|sc| sc.crossings.is_empty());
+        if frame >= settings.zero_gravity_frames && frame >= min_frames && (at_rest || (stop_at_release && untangled)) {
             converged = true;
             break;
         }

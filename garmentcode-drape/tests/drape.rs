@@ -83,6 +83,29 @@ fn attached_drapes_stop_five_frames_after_the_release_as_the_reference_on_cpu_do
 }
 
 #[test]
+fn a_drape_still_crossing_itself_at_the_release_goes_on_until_untangled() {
+    let (pattern, mut mesh) = box_mesh(include_str!("data/waistband_specification.json"));
+    let body = BodyMesh::builtin("mean_all").unwrap();
+    // The front vertex nearest the middle of the front (z = 20 cm) pulled behind the back
+    // panel (z = -15 cm): its edges cross the back.
+    let middle = Vec3::new(0.0, 107.0, 20.0);
+    let i = (0..mesh.vertices.len())
+        .min_by(|&a, &b| (mesh.vertices[a] - middle).length().total_cmp(&(mesh.vertices[b] - middle).length()))
+        .unwrap();
+    mesh.vertices[i].z = -18.0;
+    assert!(!garmentcode_drape::crossing_edges(&mesh, &mesh.vertices).is_empty());
+    let s = Settings { attachment_frames: 12, max_frames: 30, ..settings(&pattern) };
+    let result = drape(&mesh, &body, &s).unwrap();
+    // Not at frame 18 (the release's stop): through the body too, this one is not undone
+    // by frame 30, the limit. (rand_0000003 of the sampled designs, undone: docs/drape.md.)
+    assert!(result.stats.self_intersections > 0, "{:?}", result.stats);
+    assert_eq!((result.stats.frames, result.stats.converged), (30, false), "{:?}", result.stats);
+    // Untangled (the box mesh as it is), it stops at the release.
+    let (_, clean) = box_mesh(include_str!("data/waistband_specification.json"));
+    assert_eq!(drape(&clean, &body, &s).unwrap().stats.frames, 18);
+}
+
+#[test]
 fn same_inputs_give_the_same_bytes_whatever_the_threads() {
     let (pattern, mesh) = box_mesh(include_str!("data/waistband_specification.json"));
     let body = BodyMesh::builtin("mean_all").unwrap();

@@ -329,7 +329,7 @@ pub fn run(args: DrapeArgs) -> Result<i32, CliError> {
         match (s.converged, s.at_rest) {
             (true, true) => "settled".to_string(),
             (true, false) => format!(
-                "stopped 5 frames after the release as the reference's drapes stop, {} vertices still moving",
+                "stopped after the attachments' release as the reference's drapes stop, {} vertices still moving",
                 s.non_static_vertices
             ),
             (false, _) => "did not settle".to_string(),
