@@ -638,8 +638,11 @@ impl BoxMesh {
             }
         }
 
-        pleat::raise_ridges(&specs, &panels, &stitches, &loc_glob, &mut globals);
-        let folded = flat_fold::follow_seams(&panels, &loc_glob, &mut globals);
+        let pleated = pleat::raise_ridges(&specs, &panels, &stitches, &loc_glob, &mut globals);
+        let mut folded = flat_fold::follow_seams(&panels, &loc_glob, &mut globals);
+        for (moved, below) in folded.iter_mut().zip(pleated) {
+            moved.extend(below);
+        }
 
         // Assembly.
         let n_stitch_vertices = globals.len();
