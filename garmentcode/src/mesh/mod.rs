@@ -638,11 +638,8 @@ impl BoxMesh {
             }
         }
 
-        let pleated = pleat::raise_ridges(&specs, &panels, &stitches, &loc_glob, &mut globals);
-        let mut folded = flat_fold::follow_seams(&panels, &loc_glob, &mut globals);
-        for (moved, below) in folded.iter_mut().zip(pleated) {
-            moved.extend(below);
-        }
+        pleat::raise_ridges(&specs, &panels, &stitches, &loc_glob, &mut globals);
+        let folded = flat_fold::follow_seams(&panels, &loc_glob, &mut globals);
 
         // Assembly.
         let n_stitch_vertices = globals.len();

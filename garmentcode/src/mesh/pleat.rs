@@ -11,14 +11,8 @@
 //! the flat parts (the far ends' merged vertex, wherever the seam to the next piece
 //! put it), the whole depth at the inner fold. The ridge runs from that merged vertex
 //! and is shifted as it is; a box pleat's two folds share the vertex and their ridges
-//! part towards their inner folds. The fabric below the pieces starts pushed back
-//! along the same normal, as deep as the ridge above it (the whole depth under the
-//! inner fold, nothing under the pleat's lines), less and less down to [`SLOPE`]
-//! depths below them: else the faces between the ridge and the flat row under it
-//! start steep, the fabric does not know which way to fold there, and it folds
-//! through itself in the drape (the pleated skirt's box pleats, 54 crossing edges
-//! within 3 cm of the waist). Every vertex moved keeps its faces' 2D rest lengths, so
-//! only the start changes.
+//! part towards their inner folds. Every pleat vertex keeps its pieces' 2D rest
+//! lengths (its faces touch a stitch), so only the start changes.
 
 use super::{GlobalStitch, HashMap, PanelMesh, StitchMesh};
 use crate::{LineKind, PanelSpec, Vec2, Vec3};
@@ -63,17 +57,14 @@ impl Tuck {
 }
 
 /// Move the merged vertices of every pleat stitch onto its ridge (see the module
-/// documentation); vertices that another stitch merged too are left where they are.
-/// Returns, per panel, the other local vertices moved (the fabric below the pleats)
-/// and where to.
+/// documentation). Vertices that another stitch merged too are left where they are.
 pub(super) fn raise_ridges(
     specs: &[&PanelSpec],
     panels: &[PanelMesh],
     stitches: &[StitchMesh],
     loc_glob: &HashMap<(usize, usize), usize>,
     globals: &mut [GlobalStitch],
-) -> Vec<HashMap<usize, Vec3>> {
-    let mut below: Vec<HashMap<usize, Vec3>> = vec![HashMap::default(); panels.len()];
+) {
     for (k, s) in stitches.iter().enumerate() {
         let [(p, e0), (q, e1)] = s.sides;
         if p != q {
@@ -98,24 +89,5 @@ pub(super) fn raise_ridges(
             let deep = (tuck.depth - (panel.points[l] - tuck.corner).length()).clamp(0.0, tuck.depth);
             globals[g].pos = origin + toward_fold * (deep / tuck.depth) - outward * deep;
         }
-        // The fabric below the pieces (their own panel vertices) starts pushed back as deep
-        // as the ridge above it, less and less down to `SLOPE · depth` below them.
-        let far = panel.points[tuck.far];
-        let along = (tuck.corner - far).normalize();
-        let (fold, reach) = ((tuck.corner - far).length(), SLOPE * tuck.depth);
-        for l in panel.n_stitch_side..panel.points.len() {
-            let q = panel.points[l];
-            let (s, d) = (along.dot(q - far), along.perp_dot(q - far).abs());
-            if !(0.0..=2.0 * tuck.depth).contains(&s) || d >= reach {
-                continue;
-            }
-            let deep = (tuck.depth - (s - fold).abs()).max(0.0);
-            below[p].insert(l, panel.to_3d(q) - outward * deep * (1.0 - d / reach));
-        }
     }
-    below
 }
-
-/// How far below its stitched pieces (in pleat depths) the fabric of a pleat starts
-/// pushed back in the box mesh.
-const SLOPE: f64 = 2.0;
