@@ -19,7 +19,8 @@
 //! only `OUT_DIR/<case>_sim.obj` is written then (copy the case's other files next to it to judge).
 //! `DRAPE_STATS=FROM` prints a line per frame to stderr (frame index from 0, vertices moving more
 //! than the static threshold, max and mean speed in cm/s, mean y of `lower_interface`, body
-//! contacts: the columns of the reference's trace, see docs/drape.md) and writes the positions of
+//! contacts: the columns of the reference's trace, see docs/drape.md; then the crossings found
+//! at the frame's start) and writes the positions of
 //! frames `FROM` on as little-endian `f32` triples to `OUT_DIR/trace/ours_FRAME.f32`.
 
 use std::path::Path;
@@ -73,7 +74,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let lower: Vec<usize> = mesh.vertex_labels.iter().find(|(l, _)| l == "lower_interface").map(|(_, v)| v.clone()).unwrap_or_default();
     let mut last = mesh.vertices.clone();
     if stats_from.is_some() {
-        eprintln!("frame nonstatic maxspeed meanspeed lower_y contacts");
+        eprintln!("frame nonstatic maxspeed meanspeed lower_y contacts crossings");
     }
     let result = drape_with_progress(&mesh, &body, &settings, |progress| {
         if let Some(from) = stats_from {
@@ -81,11 +82,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let speeds: Vec<f64> = progress.positions.iter().zip(&last).map(|(a, b)| (*a - *b).length() * settings.fps).collect();
             let lower_y = lower.iter().map(|&i| progress.positions[i].y).sum::<f64>() / lower.len().max(1) as f64;
             eprintln!(
-                "{frame} {} {:.4} {:.5} {lower_y:.4} {}",
+                "{frame} {} {:.4} {:.5} {lower_y:.4} {} {}",
                 progress.non_static_vertices,
                 speeds.iter().fold(0.0f64, |m, &s| m.max(s)),
                 speeds.iter().sum::<f64>() / speeds.len() as f64,
-                progress.body_contacts
+                progress.body_contacts,
+                progress.crossings
             );
             last.copy_from_slice(progress.positions);
             if frame >= from {

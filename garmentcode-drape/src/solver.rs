@@ -115,9 +115,17 @@ pub struct Settings {
     /// session"). One exception, beyond the reference: while edges still cross the garment
     /// (with self-collision on, found at the frame's start) the run goes on, so that the
     /// `untangle` rule can undo them, and stops at the first frame without one (or at rest,
-    /// or at a limit). Off: only the static rule and the frame limit stop the run, as on a
+    /// or at a limit); if edges still cross [`Settings::untangle_frames`] frames after the
+    /// release, it stops there and returns the frame, since the release, with the fewest
+    /// crossing edges. Off: only the static rule and the frame limit stop the run, as on a
     /// GPU. On by default.
     pub stop_at_release: bool,
+    /// How many frames past the release's stop (frame `attachment_frames + 5`) a drape that
+    /// still crosses itself may run on to undo its crossings (600: 10 s of simulated time).
+    /// Past it, the frame with the fewest crossing edges since the release is returned, as
+    /// crossings that are not undone tend to multiply while the garment slides on (see
+    /// [`Settings::stop_at_release`]; docs/drape.md, "Eighth session").
+    pub untangle_frames: usize,
     /// Pull particles found inside the body back onto its surface (`enable_cloth_reference_drag`).
     pub body_drag: bool,
     /// Particles farther than this (plus their radius) outside their body part while their
@@ -166,6 +174,7 @@ impl Default for Settings {
             static_threshold: 0.03,
             non_static_percent: 1.5,
             stop_at_release: true,
+            untangle_frames: 600,
             body_drag: true,
             self_collision: true,
             untangle: true,
@@ -258,6 +267,9 @@ impl Settings {
         if !(1..=MAX_FRAMES).contains(&self.max_frames) {
             return bad("max_frames", self.max_frames as f64, "an integer in 1..=100000");
         }
+        if self.untangle_frames > MAX_FRAMES {
+            return bad("untangle_frames", self.untangle_frames as f64, "an integer in 0..=100000");
+        }
         for (i, a) in self.attachments.iter().enumerate() {
             let name = |field: &str| format!("attachments[{i}] ({}).{field}", a.label);
             if !a.point.is_finite() {
@@ -316,13 +328,16 @@ pub enum DrapeError {
 /// Figures of a drape.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Stats {
-    /// Frames simulated.
+    /// Frames simulated up to the positions returned (fewer than were simulated where a
+    /// drape still crossing itself ran past [`Settings::untangle_frames`] and an earlier
+    /// frame with fewer crossings was returned).
     pub frames: usize,
     /// Wall-clock seconds of the simulation (set-up included).
     pub seconds: f64,
     /// The run stopped by its rule before the frame limit: the garment came to rest (the
-    /// static rule), or the attachments had been released for 5 frames (see
-    /// [`Settings::stop_at_release`]; [`Stats::non_static_vertices`] says how much still moved).
+    /// static rule), or, 5 frames or more after the attachments' release, no edge crossed the
+    /// garment any more (see [`Settings::stop_at_release`]; [`Stats::non_static_vertices`]
+    /// says how much still moved).
     pub converged: bool,
     /// The garment was at rest in its last frame by the static rule (at most
     /// [`Settings::non_static_percent`] of its vertices moved more than the threshold):
@@ -483,6 +498,9 @@ pub struct Progress<'a> {
     pub non_static_vertices: usize,
     /// Body contacts found at the start of this frame (particles in the contact band).
     pub body_contacts: usize,
+    /// Edges crossing a garment triangle found at the start of this frame (edge–triangle
+    /// pairs of the self-collision search; 0 with self-collision off).
+    pub crossings: usize,
     /// The garment's vertex positions after this frame (cm, box-mesh order).
     pub positions: &'a [Vec3],
 }
@@ -551,6 +569,10 @@ pub fn drape_with_progress(
         .then(|| SelfCollision::new(mesh.faces.iter().map(|f| f.vertices).collect(), &x));
     let mut untangle = Untangle::default();
     let (mut frames, mut converged, mut non_static, mut at_rest) = (0, false, 0, false);
+    // Past the release, still crossing: the frame-start state with the fewest crossings
+    // (count, frames simulated up to it, its moving vertices, at rest) and its positions.
+    let mut fewest: Option<(usize, usize, usize, bool)> = None;
+    let mut fewest_x: Vec<Vec3> = Vec::new();
 
     for frame in 0..settings.max_frames {
         let g = if frame >= settings.zero_gravity_frames { Vec3::new(0.0, -settings.gravity, 0.0) } else { Vec3::ZERO };
@@ -620,6 +642,19 @@ pub fn drape_with_progress(
             }
             // Crossings the drag does not undo.
             untangle.update(&x, sc.faces(), &sc.crossings, |k, l, _| settings.untangle && drag[k] != 1 && drag[l] != 1);
+            if stop_at_release && frame >= min_frames && !sc.crossings.is_empty() {
+                if fewest.is_none_or(|(count, ..)| sc.crossings.len() < count) {
+                    fewest = Some((sc.crossings.len(), frame, non_static, at_rest));
+                    fewest_x.clone_from(&x);
+                }
+                if frame >= min_frames + settings.untangle_frames
+                    && let Some((_, f, moving, rest)) = fewest
+                {
+                    x = std::mem::take(&mut fewest_x);
+                    (frames, non_static, at_rest) = (f, moving, rest);
+                    break;
+                }
+            }
         }
         dragged.clear();
         dragged.extend((0..n).filter(|&i| drag[i] != 0 && draggable[i]));
@@ -734,6 +769,7 @@ pub fn drape_with_progress(
             max_frames: settings.max_frames,
             non_static_vertices: non_static,
             body_contacts: contacts.len(),
+            crossings: self_collision.as_ref().map_or(0, |sc| sc.crossings.len()),
             positions: &x,
         };
         if on_frame(&progress) == Next::Stop {

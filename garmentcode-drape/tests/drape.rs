@@ -4,7 +4,7 @@
 
 use garmentcode::Vec3;
 use garmentcode::mesh::{BoxMesh, VertexLabel};
-use garmentcode_drape::{BodyError, BodyMesh, Drape, DrapeError, Settings, Strain, drape, sim_obj};
+use garmentcode_drape::{BodyError, BodyMesh, Drape, DrapeError, Next, Settings, Strain, drape, drape_with_progress, sim_obj};
 
 const MEAN_ALL: &str = include_str!("data/mean_all.yaml");
 
@@ -82,18 +82,24 @@ fn attached_drapes_stop_five_frames_after_the_release_as_the_reference_on_cpu_do
     }
 }
 
-#[test]
-fn a_drape_still_crossing_itself_at_the_release_goes_on_until_untangled() {
+/// The waistband's box mesh with the front vertex nearest the middle of the front (z = 20 cm)
+/// pulled behind the back panel (z = -15 cm): its edges cross the back, and through the body
+/// too, so the crossing is not undone within 30 frames.
+fn crossed_waistband() -> (garmentcode::Pattern, BoxMesh) {
     let (pattern, mut mesh) = box_mesh(include_str!("data/waistband_specification.json"));
-    let body = BodyMesh::builtin("mean_all").unwrap();
-    // The front vertex nearest the middle of the front (z = 20 cm) pulled behind the back
-    // panel (z = -15 cm): its edges cross the back.
     let middle = Vec3::new(0.0, 107.0, 20.0);
     let i = (0..mesh.vertices.len())
         .min_by(|&a, &b| (mesh.vertices[a] - middle).length().total_cmp(&(mesh.vertices[b] - middle).length()))
         .unwrap();
     mesh.vertices[i].z = -18.0;
     assert!(!garmentcode_drape::crossing_edges(&mesh, &mesh.vertices).is_empty());
+    (pattern, mesh)
+}
+
+#[test]
+fn a_drape_still_crossing_itself_at_the_release_goes_on_until_untangled() {
+    let (pattern, mesh) = crossed_waistband();
+    let body = BodyMesh::builtin("mean_all").unwrap();
     let s = Settings { attachment_frames: 12, max_frames: 30, ..settings(&pattern) };
     let result = drape(&mesh, &body, &s).unwrap();
     // Not at frame 18 (the release's stop): through the body too, this one is not undone
@@ -103,6 +109,39 @@ fn a_drape_still_crossing_itself_at_the_release_goes_on_until_untangled() {
     // Untangled (the box mesh as it is), it stops at the release.
     let (_, clean) = box_mesh(include_str!("data/waistband_specification.json"));
     assert_eq!(drape(&clean, &body, &s).unwrap().stats.frames, 18);
+}
+
+#[test]
+fn a_drape_still_crossed_after_its_untangle_frames_returns_its_least_crossed_frame() {
+    let (pattern, mesh) = crossed_waistband();
+    let body = BodyMesh::builtin("mean_all").unwrap();
+    // Released after 12 frames: the release's stop is frame 17, the window ends at frame 37.
+    let s = Settings { attachment_frames: 12, max_frames: 60, untangle_frames: 20, ..settings(&pattern) };
+    // crossings[i]: edges crossing at the start of frame i, that is after i frames.
+    let mut crossings = Vec::new();
+    let result = drape_with_progress(&mesh, &body, &s, |progress| {
+        crossings.push(progress.crossings);
+        Next::Continue
+    })
+    .unwrap();
+    // Frame 37 was not simulated: the run stopped at its start.
+    assert_eq!(crossings.len(), 37, "{:?}", result.stats);
+    let (frames, window) = (result.stats.frames, &crossings[17..]);
+    assert!(window.iter().all(|&c| c > 0), "{window:?}: undone within the window");
+    assert!((17..37).contains(&frames) && !result.stats.converged, "{:?}", result.stats);
+    // The first frame with the fewest crossings, and fewer than at the window's end (the
+    // count grows from 7 to 11 here as the garment settles crossed).
+    let least = *window.iter().min().unwrap();
+    assert_eq!(crossings[frames], least, "{window:?}, returned after {frames} frames");
+    assert!(crossings[17..frames].iter().all(|&c| c > least), "{window:?}: not the first least");
+    assert!(least < crossings[36], "{window:?}");
+    // The positions are those of the same drape stopped after that many frames by its limit.
+    let stopped = drape(&mesh, &body, &Settings { max_frames: frames, ..s.clone() }).unwrap();
+    assert_eq!(stopped.positions, result.positions);
+    assert_eq!(stopped.stats.non_static_vertices, result.stats.non_static_vertices);
+    // With no window, it stops at the release's frame, crossed.
+    let at_release = drape(&mesh, &body, &Settings { untangle_frames: 0, ..s.clone() }).unwrap();
+    assert_eq!((at_release.stats.frames, at_release.stats.converged), (17, false), "{:?}", at_release.stats);
 }
 
 #[test]
@@ -145,6 +184,8 @@ fn settings_out_of_range_are_refused_with_their_name_and_range() {
     assert!(err.to_string().contains("spring_ke"), "{err}");
     let err = drape(&mesh, &body, &Settings { threads: 1000, ..settings(&pattern) }).unwrap_err();
     assert!(err.to_string().contains("threads = 1000: must be an integer in 0..=256"), "{err}");
+    let err = drape(&mesh, &body, &Settings { untangle_frames: 100_001, ..settings(&pattern) }).unwrap_err();
+    assert!(err.to_string().contains("untangle_frames = 100001: must be an integer in 0..=100000"), "{err}");
     let mut bad = settings(&pattern);
     bad.attachments[0].normal = Vec3::new(0.0, 2.0, 0.0);
     let err = drape(&mesh, &body, &bad).unwrap_err();

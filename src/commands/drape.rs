@@ -169,7 +169,7 @@ fn report_json(mesh: &BoxMesh, x: &[garmentcode::Vec3], stats: &Stats, fails: &[
             "attachment_frames": s.attachment_frames, "attachments": attachments,
             "static_threshold": s.static_threshold, "non_static_percent": s.non_static_percent,
             "body_drag": s.body_drag, "reference_margin": s.reference_margin, "self_collision": s.self_collision,
-            "untangle": s.untangle,
+            "untangle": s.untangle, "untangle_frames": s.untangle_frames,
             "max_body_penetrations": MAX_BODY_PENETRATIONS, "max_self_intersections": MAX_SELF_INTERSECTIONS,
         },
     });
