@@ -642,6 +642,12 @@ pub fn drape_with_progress(
             }
             // Crossings the drag does not undo.
             untangle.update(&x, sc.faces(), &sc.crossings, |k, l, _| settings.untangle && drag[k] != 1 && drag[l] != 1);
+            // Past the release's frame, no edge crossing the garment as it stands: stop, with
+            // the positions just checked (those at the end of the last frame).
+            if stop_at_release && frame > min_frames && sc.crossings.is_empty() {
+                converged = true;
+                break;
+            }
             if stop_at_release && frame >= min_frames && !sc.crossings.is_empty() {
                 if fewest.is_none_or(|(count, ..)| sc.crossings.len() < count) {
                     fewest = Some((sc.crossings.len(), frame, non_static, at_rest));
@@ -759,8 +765,9 @@ pub fn drape_with_progress(
         non_static = x.iter().zip(&prev).filter(|(a, b)| (**a - **b).abs().element_sum() > settings.static_threshold).count();
         at_rest = non_static == 0 || (non_static as f64) < settings.non_static_percent / 100.0 * n as f64;
         // The static rule runs after the zero-gravity frames and the attachment frames.
-        let untangled = self_collision.as_ref().is_none_or(|sc| sc.crossings.is_empty());
-        if frame >= settings.zero_gravity_frames && frame >= min_frames && (at_rest || (stop_at_release && untangled)) {
+        // Without self-collision, nothing is known to cross: the release stops the run here.
+        let unchecked = stop_at_release && self_collision.is_none();
+        if frame >= settings.zero_gravity_frames && frame >= min_frames && (at_rest || unchecked) {
             converged = true;
             break;
         }
