@@ -121,7 +121,8 @@ pub struct Settings {
     /// GPU. On by default.
     pub stop_at_release: bool,
     /// How many frames past the release's stop (frame `attachment_frames + 5`) a drape that
-    /// still crosses itself may run on to undo its crossings (600: 10 s of simulated time).
+    /// still crosses itself may run on to undo its crossings (1,000: about 17 s of simulated
+    /// time).
     /// Past it, the frame with the fewest crossing edges since the release is returned, as
     /// crossings that are not undone tend to multiply while the garment slides on (see
     /// [`Settings::stop_at_release`]; docs/drape.md, "Eighth session").
@@ -174,7 +175,7 @@ impl Default for Settings {
             static_threshold: 0.03,
             non_static_percent: 1.5,
             stop_at_release: true,
-            untangle_frames: 600,
+            untangle_frames: 1000,
             body_drag: true,
             self_collision: true,
             untangle: true,
